@@ -1,0 +1,77 @@
+"""The `ragnav` console script: thin argument parsing around the package's stage functions.
+
+Each stage module exposes `register(subparsers, common)`; user errors print one line and exit 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+
+from ragnav_jax.errors import UserError
+
+# Stage modules that add subcommands; later stages append theirs.
+COMMAND_MODULES = ("ragnav_jax.world.commands",)
+
+
+def _common_parser() -> argparse.ArgumentParser:
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("--config", help="YAML config (default: built-in defaults, see configs/default.yaml)")
+    common.add_argument("--quiet", action="store_true", help="no progress bars")
+    common.add_argument("overrides", nargs="*", default=[], metavar="KEY=VALUE", help="dotted config overrides")
+    return common
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # argparse's own exit code is already 2; keep its usage line short
+        self.print_usage(sys.stderr)
+        self.exit(2, f"ragnav: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="ragnav", description="RAGNav in JAX: scenes, memory, retrieval, planning, evaluation")
+    from ragnav_jax import __version__
+
+    parser.add_argument("--version", action="version", version=f"ragnav-jax {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    common = _common_parser()
+    for name in COMMAND_MODULES:
+        importlib.import_module(name).register(sub, common)
+    return parser
+
+
+def _split_overrides(args) -> None:
+    """Positional KEY=VALUE items are overrides; anything else is a usage error."""
+    items = getattr(args, "overrides", []) or []
+    bad = [x for x in items if "=" not in x]
+    if bad:
+        raise UserError(f"unexpected argument(s) {' '.join(bad)}: overrides must look like key.sub=value")
+    if items and getattr(args, "overrides_allowed", True) is False:
+        raise UserError(f"'{args.command}' takes no config overrides (got {' '.join(items)})")
+
+
+def main(argv: list[str] | None = None) -> int:
+    from ragnav_jax.config import load_config
+
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        _split_overrides(args)
+        cfg = load_config(args.config, args.overrides)
+        return int(args.func(args, cfg) or 0)
+    except UserError as e:
+        print(f"ragnav: error: {e}", file=sys.stderr)
+        return e.exit_code
+    except KeyboardInterrupt:
+        print("ragnav: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

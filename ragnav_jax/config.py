@@ -1,0 +1,239 @@
+"""Typed, frozen configs loaded from YAML with dotted command-line overrides.
+
+    cfg = load_config("configs/paper.yaml", ["world.num_scenes=20"])
+
+Every section is a frozen dataclass; unknown keys and wrongly typed values raise ConfigError naming
+the dotted key. Later stages add their own sections here.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import types
+import typing
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from ragnav_jax.errors import ConfigError
+
+ROOM_TYPES = (
+    "kitchen",
+    "living room",
+    "bedroom",
+    "study",
+    "bathroom",
+    "dining room",
+    "office",
+    "hallway",
+    "gym",
+    "greenhouse",
+)
+
+
+def _check(ok: bool, key: str, why: str) -> None:
+    if not ok:
+        raise ConfigError(f"config key '{key}': {why}")
+
+
+@dataclasses.dataclass(frozen=True)
+class WorldConfig:
+    """Procedural house generator settings (ragnav generate)."""
+
+    num_scenes: int = 4
+    min_rooms: int = 4
+    max_rooms: int = 9
+    min_objects: int = 25  # per scene
+    max_objects: int = 70
+    room_side: tuple[float, float] = (3.0, 6.5)  # metres, range of a room's target side length
+    door_width: float = 1.0  # metres
+    extra_door_prob: float = 0.35  # chance of a door between adjacent rooms beyond the spanning tree
+    min_distractor_categories: int = 3  # categories that appear at least twice per scene
+    room_types: tuple[str, ...] = ROOM_TYPES
+    name_prefix: str = "house"
+
+    def __post_init__(self):
+        _check(self.num_scenes >= 1, "world.num_scenes", "must be >= 1")
+        _check(1 <= self.min_rooms <= self.max_rooms, "world.min_rooms", "need 1 <= min_rooms <= max_rooms")
+        _check(self.max_rooms <= 16, "world.max_rooms", "must be <= 16")
+        _check(
+            1 <= self.min_objects <= self.max_objects, "world.min_objects", "need 1 <= min_objects <= max_objects"
+        )
+        _check(
+            2.0 <= self.room_side[0] <= self.room_side[1], "world.room_side", "need 2.0 <= low <= high (metres)"
+        )
+        _check(0.6 <= self.door_width <= 2.0, "world.door_width", "must be in [0.6, 2.0] metres")
+        _check(0.0 <= self.extra_door_prob <= 1.0, "world.extra_door_prob", "must be in [0, 1]")
+        _check(len(self.room_types) >= 1, "world.room_types", "must name at least one room type")
+
+
+@dataclasses.dataclass(frozen=True)
+class RunConfig:
+    """Where run folders go."""
+
+    root: str = "runs"
+
+
+@dataclasses.dataclass(frozen=True)
+class Config:
+    """The whole resolved configuration of a run."""
+
+    seed: int = 0
+    world: WorldConfig = dataclasses.field(default_factory=WorldConfig)
+    run: RunConfig = dataclasses.field(default_factory=RunConfig)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Building dataclasses from plain data, with type checks.
+
+
+def _type_name(tp: Any) -> str:
+    return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
+
+
+def _coerce(value: Any, tp: Any, key: str) -> Any:
+    """Checks `value` against the annotation `tp`; returns it converted (lists to tuples, int to float)."""
+    origin = typing.get_origin(tp)
+    if dataclasses.is_dataclass(tp):
+        if not isinstance(value, dict):
+            raise ConfigError(f"config key '{key}': expected a mapping (section), got {value!r}")
+        return _build(tp, value, key)
+    if origin in (typing.Union, types.UnionType):
+        args = typing.get_args(tp)
+        if value is None and type(None) in args:
+            return None
+        errors = []
+        for arg in args:
+            if arg is type(None):
+                continue
+            try:
+                return _coerce(value, arg, key)
+            except ConfigError as e:
+                errors.append(str(e))
+        raise ConfigError(f"config key '{key}': expected {_type_name(tp)}, got {value!r}")
+    if origin is tuple:
+        args = typing.get_args(tp)
+        if not isinstance(value, (list, tuple)):
+            raise ConfigError(f"config key '{key}': expected a list, got {value!r}")
+        if len(args) == 2 and args[1] is Ellipsis:
+            return tuple(_coerce(v, args[0], f"{key}[{i}]") for i, v in enumerate(value))
+        if len(value) != len(args):
+            raise ConfigError(f"config key '{key}': expected a list of {len(args)} items, got {value!r}")
+        return tuple(_coerce(v, a, f"{key}[{i}]") for i, (v, a) in enumerate(zip(value, args)))
+    if tp is bool:
+        if not isinstance(value, bool):
+            raise ConfigError(f"config key '{key}': expected true/false, got {value!r}")
+        return value
+    if tp is int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise ConfigError(f"config key '{key}': expected an integer, got {value!r}")
+        return value
+    if tp is float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ConfigError(f"config key '{key}': expected a number, got {value!r}")
+        if not math.isfinite(value):
+            raise ConfigError(f"config key '{key}': expected a finite number, got {value!r}")
+        return float(value)
+    if tp is str:
+        if not isinstance(value, str):
+            raise ConfigError(f"config key '{key}': expected a string, got {value!r}")
+        return value
+    raise TypeError(f"unsupported config annotation {tp!r} for {key}")  # a programming error
+
+
+def _build(cls: type, data: dict, prefix: str = "") -> Any:
+    hints = typing.get_type_hints(cls)
+    names = [f.name for f in dataclasses.fields(cls)]
+    kwargs = {}
+    for k, v in data.items():
+        key = f"{prefix}.{k}" if prefix else str(k)
+        if k not in names:
+            raise ConfigError(f"unknown config key '{key}' (known here: {', '.join(names)})")
+        kwargs[k] = _coerce(v, hints[k], key)
+    return cls(**kwargs)
+
+
+def config_from_dict(data: dict) -> Config:
+    """Builds a Config from nested plain data (as read from YAML)."""
+    if data is None:
+        data = {}
+    if not isinstance(data, dict):
+        raise ConfigError(f"config must be a mapping at the top level, got {type(data).__name__}")
+    return _build(Config, data)
+
+
+def to_dict(cfg: Any) -> dict:
+    """Plain nested data (tuples as lists) for YAML/JSON output."""
+
+    def plain(v):
+        if dataclasses.is_dataclass(v):
+            return {f.name: plain(getattr(v, f.name)) for f in dataclasses.fields(v)}
+        if isinstance(v, (list, tuple)):
+            return [plain(x) for x in v]
+        return v
+
+    return plain(cfg)
+
+
+def apply_overrides(data: dict, overrides: typing.Iterable[str]) -> dict:
+    """Applies `a.b.c=value` overrides (values parsed as YAML scalars/lists) to nested data."""
+    data = dict(data or {})
+    for item in overrides:
+        if "=" not in item:
+            raise ConfigError(f"override '{item}' must look like key.sub=value")
+        key, raw = item.split("=", 1)
+        key = key.strip()
+        if not key:
+            raise ConfigError(f"override '{item}' has an empty key")
+        try:
+            value = yaml.safe_load(raw) if raw.strip() else ""
+        except yaml.YAMLError as e:
+            raise ConfigError(f"override '{key}': cannot read value {raw!r} ({e.__class__.__name__})") from None
+        node = data
+        parts = key.split(".")
+        for depth, part in enumerate(parts[:-1]):
+            child = node.get(part, {})
+            if not isinstance(child, dict):
+                raise ConfigError(f"override '{key}': '{'.'.join(parts[: depth + 1])}' is not a section")
+            child = dict(child)
+            node[part] = child
+            node = child
+        node[parts[-1]] = value
+    return data
+
+
+def read_yaml(path: str | Path) -> dict:
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except OSError as e:
+        raise ConfigError(f"{path}: cannot read config ({e.strerror})") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as e:
+        mark = getattr(e, "problem_mark", None)
+        where = f" line {mark.line + 1}" if mark is not None else ""
+        raise ConfigError(f"{path}:{where} not valid YAML ({getattr(e, 'problem', e)})") from None
+    if data is None:
+        return {}
+    if not isinstance(data, dict):
+        raise ConfigError(f"{path}: config must be a mapping at the top level")
+    return data
+
+
+def load_config(path: str | Path | None = None, overrides: typing.Iterable[str] = ()) -> Config:
+    """Loads a YAML config (defaults when `path` is None) and applies dotted overrides."""
+    data = read_yaml(path) if path is not None else {}
+    data = apply_overrides(data, overrides)
+    try:
+        return config_from_dict(data)
+    except ConfigError as e:
+        if path is not None:
+            raise ConfigError(f"{path}: {e}") from None
+        raise
+
+
+def dump_yaml(cfg: Config) -> str:
+    return yaml.safe_dump(to_dict(cfg), sort_keys=False)

@@ -1,0 +1,1 @@
+"""ragnav_jax.sim."""

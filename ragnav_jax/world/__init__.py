@@ -1,0 +1,1 @@
+"""RAGNav scene world: schema, loading and validation, procedural generator, array padding."""

@@ -1,0 +1,111 @@
+"""CLI subcommands of the world stage: generate, validate, show-scene."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from collections import Counter
+from pathlib import Path
+
+from ragnav_jax.errors import UserError
+from ragnav_jax.runs import default_run_dir, init_run
+from ragnav_jax.tables import write_table
+
+
+def scene_summary(scene) -> dict:
+    from ragnav_jax.world.geometry import reachability
+
+    counts = Counter(o.category for o in scene.objects)
+    reach = reachability(scene)
+    return {
+        "scene": scene.name,
+        "rooms": len(scene.rooms),
+        "room_types": ", ".join(r.type for r in scene.rooms),
+        "walls": len(scene.walls),
+        "objects": len(scene.objects),
+        "categories": len(counts),
+        "distractor_categories": sum(1 for v in counts.values() if v >= 2),
+        "floor_area_m2": round(sum(r.area for r in scene.rooms), 1),
+        "reachable_area_m2": round(reach.reachable_area, 1),
+        "all_rooms_reachable": all(reach.rooms_reachable.values()),
+        "all_objects_reachable": all(reach.objects_reachable.values()),
+    }
+
+
+def cmd_generate(args, cfg) -> int:
+    from ragnav_jax.world.generator import generate_scenes
+    from ragnav_jax.world.plot import save_floor_plan
+    from ragnav_jax.world.scene import save_scene
+
+    run = Path(args.out) if args.out else default_run_dir(cfg, "generate")
+    scenes_dir = run / "scenes"
+    if scenes_dir.exists() and any(scenes_dir.iterdir()) and not args.force:
+        raise UserError(f"{scenes_dir}: already holds scenes; pass --force to overwrite or choose another --out")
+    init_run(run, cfg, "generate")
+    scenes = generate_scenes(cfg.world, cfg.seed, progress=not args.quiet)
+    for s in scenes:
+        save_scene(s, scenes_dir / f"{s.name}.json")
+    rows = [scene_summary(s) for s in scenes]
+    write_table(rows, run / "scenes_summary")
+    totals = {
+        "num_scenes": len(scenes),
+        "mean_rooms": sum(r["rooms"] for r in rows) / len(rows),
+        "mean_objects": sum(r["objects"] for r in rows) / len(rows),
+        "all_reachable": all(r["all_rooms_reachable"] and r["all_objects_reachable"] for r in rows),
+        "scenes": rows,
+    }
+    (run / "summary.json").write_text(json.dumps(totals, indent=1) + "\n")
+    if args.plots:
+        for s in scenes:
+            save_floor_plan(s, run / "plots" / f"{s.name}.png")
+    print((run / "scenes_summary.md").read_text())
+    print(f"{len(scenes)} scenes written to {scenes_dir}" + (f"; floor plans in {run / 'plots'}" if args.plots else ""))
+    return 0
+
+
+def cmd_validate(args, cfg) -> int:
+    from ragnav_jax.errors import SceneError
+    from ragnav_jax.world.scene import load_scene, scene_files
+
+    bad = 0
+    for src in args.paths:
+        for f in scene_files(src):
+            try:
+                s = load_scene(f)
+                print(f"ok   {f} ({s.name}: {len(s.rooms)} rooms, {len(s.walls)} walls, {len(s.objects)} objects)")
+            except SceneError as e:
+                print(f"FAIL {e}")
+                bad += 1
+    if bad:
+        raise UserError(f"{bad} invalid scene file(s)")
+    return 0
+
+
+def cmd_show_scene(args, cfg) -> int:
+    from ragnav_jax.world.plot import save_floor_plan
+    from ragnav_jax.world.scene import load_scene
+
+    scene = load_scene(args.file)
+    out = Path(args.out)
+    if out.suffix.lower() not in (".png", ".pdf", ".svg"):
+        raise UserError(f"--out {out}: use a .png, .pdf or .svg file name")
+    save_floor_plan(scene, out)
+    print(f"floor plan of {scene.name} written to {out}")
+    return 0
+
+
+def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    p = sub.add_parser("generate", parents=[common], help="generate procedural house scenes")
+    p.add_argument("--out", help="run folder (default: RUN_ROOT/generate-TIMESTAMP)")
+    p.add_argument("--force", action="store_true", help="overwrite scenes already in the run folder")
+    p.add_argument("--no-plots", dest="plots", action="store_false", help="skip floor-plan pictures")
+    p.set_defaults(func=cmd_generate)
+
+    p = sub.add_parser("validate", parents=[common], help="validate scene files or folders")
+    p.add_argument("paths", nargs="+", metavar="PATH")
+    p.set_defaults(func=cmd_validate, overrides_allowed=False)
+
+    p = sub.add_parser("show-scene", parents=[common], help="draw a scene's floor plan")
+    p.add_argument("file")
+    p.add_argument("--out", required=True, help="picture file (.png, .pdf, .svg)")
+    p.set_defaults(func=cmd_show_scene, overrides_allowed=False)
