@@ -13,9 +13,10 @@ def test_generate_writes_run_folder(tmp_path, capsys):
     assert main(["generate", "--out", str(run), "--quiet", "world.num_scenes=2", "seed=4"]) == 0
     scenes = load_scene_set(run / "scenes")
     assert [s.name for s in scenes] == ["house_000", "house_001"]
-    for name in ("config.yaml", "run_info.json", "summary.json", "scenes_summary.csv", "scenes_summary.md"):
+    for name in ("config.yaml", "run_info.json", "generate/summary.json", "generate/scenes_summary.csv",
+                 "generate/scenes_summary.md"):
         assert (run / name).exists(), name
-    assert (run / "plots" / "house_000.png").stat().st_size > 10_000
+    assert (run / "generate" / "plots" / "house_000.png").stat().st_size > 10_000
     info = json.loads((run / "run_info.json").read_text())
     assert info["packages"]["jax"] == "0.9.2" and info["git_commit"]
     assert "num_scenes: 2" in (run / "config.yaml").read_text() and "seed: 4" in (run / "config.yaml").read_text()

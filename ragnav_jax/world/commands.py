@@ -45,8 +45,9 @@ def cmd_generate(args, cfg) -> int:
     scenes = generate_scenes(cfg.world, cfg.seed, progress=not args.quiet)
     for s in scenes:
         save_scene(s, scenes_dir / f"{s.name}.json")
+    stage = run / "generate"
     rows = [scene_summary(s) for s in scenes]
-    write_table(rows, run / "scenes_summary")
+    write_table(rows, stage / "scenes_summary")
     totals = {
         "num_scenes": len(scenes),
         "mean_rooms": sum(r["rooms"] for r in rows) / len(rows),
@@ -54,12 +55,12 @@ def cmd_generate(args, cfg) -> int:
         "all_reachable": all(r["all_rooms_reachable"] and r["all_objects_reachable"] for r in rows),
         "scenes": rows,
     }
-    (run / "summary.json").write_text(json.dumps(totals, indent=1) + "\n")
+    (stage / "summary.json").write_text(json.dumps(totals, indent=1) + "\n")
     if args.plots:
         for s in scenes:
-            save_floor_plan(s, run / "plots" / f"{s.name}.png")
-    print((run / "scenes_summary.md").read_text())
-    print(f"{len(scenes)} scenes written to {scenes_dir}" + (f"; floor plans in {run / 'plots'}" if args.plots else ""))
+            save_floor_plan(s, stage / "plots" / f"{s.name}.png")
+    print((stage / "scenes_summary.md").read_text())
+    print(f"{len(scenes)} scenes written to {scenes_dir}" + (f"; floor plans in {stage / 'plots'}" if args.plots else ""))
     return 0
 
 
