@@ -1,0 +1,83 @@
+"""Retrieval hyperparameters and ablation flags as array pytrees (sweeps vmap over them)."""
+
+from __future__ import annotations
+
+import jax.numpy as jnp
+from flax import struct
+
+
+@struct.dataclass
+class RetrievalParams:
+    """Every field is a scalar array so a grid of them vmaps through one compiled function.
+
+    Ablation flags are 0/1 floats of the same kernel (never separate code paths).
+    """
+
+    sigma: jnp.ndarray  # metres, width of the Gaussian in S_spatial (paper's sigma)
+    eta: jnp.ndarray  # neighbour boosting coefficient (paper's eta)
+    top_k: jnp.ndarray  # int32, candidates recalled for A in anchor-guided retrieval (paper's K)
+    hops: jnp.ndarray  # int32, neighbourhood radius for anchor validation
+    boost_hops: jnp.ndarray  # int32, neighbourhood radius for boosting
+    beam: jnp.ndarray  # int32, semantic forest beam width per level
+    anchor_threshold: jnp.ndarray  # a node matches the anchor phrase at or above this similarity
+    boost_threshold: jnp.ndarray  # a neighbour is relevant at or above this score
+    w_slot: jnp.ndarray  # weight of the per-object (instance) similarity vs the node fingerprint
+    match_threshold: jnp.ndarray  # head-noun similarity above which an instance counts as the category
+    sigma_loc: jnp.ndarray  # metres, width of the location-hint Gaussian
+    w_loc: jnp.ndarray  # exponent of the location term (0 ignores hints)
+    w_sensor: jnp.ndarray  # exponent of the sensor term (0 ignores sensor constraints)
+    use_forest: jnp.ndarray  # 1: hierarchical pruning; 0: flat scoring of all nodes ("w/o semantic forest")
+    use_topology: jnp.ndarray  # 1: anchor validation and boosting over G_t; 0: neither ("w/o topological map")
+    use_spatial: jnp.ndarray  # 1: anchor-guided spatial term ("w/o spatial enhancement" at 0)
+    use_boost: jnp.ndarray  # 1: neighbour boosting ("w/o neighbour enhancement" at 0)
+
+    @staticmethod
+    def create(**overrides) -> "RetrievalParams":
+        base = dict(DEFAULTS)
+        unknown = set(overrides) - set(base)
+        if unknown:
+            raise KeyError(f"unknown retrieval parameter(s): {sorted(unknown)}")
+        base.update(overrides)
+        return RetrievalParams(
+            **{k: jnp.asarray(v, jnp.int32 if k in INT_FIELDS else jnp.float32) for k, v in base.items()}
+        )
+
+
+INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
+DEFAULTS = dict(
+    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=3, anchor_threshold=0.45, boost_threshold=0.45,
+    w_slot=0.7, match_threshold=0.6, sigma_loc=1.5, w_loc=1.0, w_sensor=1.0,
+    use_forest=1.0, use_topology=1.0, use_spatial=1.0, use_boost=1.0,
+)
+# Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).
+MAX_K = 16
+MAX_HOPS = 3
+MAX_BEAM = 8
+
+ABLATIONS = {
+    "ragnav": {},
+    "no_forest": {"use_forest": 0.0},
+    "no_topology": {"use_topology": 0.0},
+    "no_spatial": {"use_spatial": 0.0},
+    "no_boost": {"use_boost": 0.0},
+}
+
+
+def params_from_config(cfg) -> RetrievalParams:
+    """RetrievalParams from a config section with the same field names (e.g. cfg.retrieval)."""
+    return RetrievalParams.create(**{f: getattr(cfg, f) for f in DEFAULTS if hasattr(cfg, f)})
+
+
+def ablation_params(base: RetrievalParams, variant: str) -> RetrievalParams:
+    if variant not in ABLATIONS:
+        raise KeyError(f"unknown ablation '{variant}' (known: {', '.join(ABLATIONS)})")
+    return base.replace(**{k: jnp.asarray(v, jnp.float32) for k, v in ABLATIONS[variant].items()})
+
+
+def stack_params(ps: list[RetrievalParams]) -> RetrievalParams:
+    """A leading grid axis over several parameter sets."""
+    import jax
+
+    return jax.tree.map(lambda *xs: jnp.stack(xs), *ps)
+
+
