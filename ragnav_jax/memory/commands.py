@@ -1,0 +1,101 @@
+"""CLI subcommands of the memory stage: build-memory, show-memory."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from ragnav_jax.errors import UserError
+
+
+def bank_dir(run: Path) -> Path:
+    return Path(run) / "memory" / "bank"
+
+
+def load_run_inputs(run: Path):
+    """Scenes of RUN/scenes and their streams RUN/explore/streams/<scene>.npz (same order)."""
+    from ragnav_jax.sim.stream import ExplorationStream
+    from ragnav_jax.world.scene import load_scene_set
+
+    if not (run / "scenes").is_dir():
+        raise UserError(f"{run}: no scenes/ folder; run `ragnav generate --out {run}` first")
+    scenes = load_scene_set(run / "scenes")
+    streams_dir = run / "explore" / "streams"
+    missing = [s.name for s in scenes if not (streams_dir / f"{s.name}.npz").is_file()]
+    if missing:
+        raise UserError(f"{streams_dir}: no exploration stream for {', '.join(missing)}; "
+                        f"run `ragnav explore --scenes {run / 'scenes'} --out {run}` first")
+    streams = [ExplorationStream.load(streams_dir / f"{s.name}.npz") for s in scenes]
+    for s, st in zip(scenes, streams):
+        if st.scene != s.name:
+            raise UserError(f"{streams_dir / (s.name + '.npz')}: stream of scene '{st.scene}', expected '{s.name}'")
+    return scenes, streams
+
+
+def cmd_build_memory(args, cfg) -> int:
+    from ragnav_jax.memory.build import build_bank, memory_summary
+    from ragnav_jax.memory.checkpoint import save_bank
+    from ragnav_jax.runs import init_run
+    from ragnav_jax.tables import write_table
+
+    run = Path(args.run)
+    out = bank_dir(run)
+    if out.exists() and not args.force:
+        raise UserError(f"{out}: a memory bank exists; pass --force to rebuild it")
+    scenes, streams = load_run_inputs(run)
+    init_run(run, cfg, "build-memory")
+    bank, stats = build_bank(scenes, streams, cfg, progress=not args.quiet)
+    save_bank(bank, out)
+    stage = run / "memory"
+    summary = memory_summary(bank)
+    summary["embedder"] = cfg.memory.embedder
+    summary["stage_seconds"] = {k: round(v, 4) for k, v in stats.stage_seconds.items()}
+    summary["texts_embedded"] = stats.texts_embedded
+    (stage / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    rows = [{k: (", ".join(map(str, v)) if isinstance(v, list) else v) for k, v in r.items()} for r in summary["scenes"]]
+    write_table(rows, stage / "memory_summary")
+    with open(stage / "nodes.jsonl", "w") as f:
+        pos = bank.memory.position
+        for b, meta in enumerate(bank.metas):
+            for i in range(meta.num_nodes):
+                f.write(json.dumps({
+                    "scene": meta.scene, "node": i, "position": [round(float(v), 3) for v in pos[b, i]],
+                    "caption": meta.captions[i], "observed": list(meta.observed_ids[i]),
+                }) + "\n")
+    print((stage / "memory_summary.md").read_text())
+    print(f"memory of {len(scenes)} scenes (mean {summary['mean_nodes']:.1f} nodes) written to {out}")
+    return 0
+
+
+def cmd_show_memory(args, cfg) -> int:
+    from ragnav_jax.memory.checkpoint import load_bank
+    from ragnav_jax.memory.plot import save_memory_plot
+    from ragnav_jax.world.scene import load_scene
+
+    run = Path(args.run)
+    out = Path(args.out)
+    if out.suffix.lower() not in (".png", ".pdf", ".svg"):
+        raise UserError(f"--out {out}: use a .png, .pdf or .svg file name")
+    bank = load_bank(bank_dir(run))
+    mem, meta = bank.scene(args.scene)
+    scene_file = run / "scenes" / f"{args.scene}.json"
+    if not scene_file.is_file():
+        raise UserError(f"{scene_file}: scene file missing")
+    save_memory_plot(load_scene(scene_file), mem, meta, out, level=args.level)
+    print(f"memory of {args.scene} ({meta.num_nodes} nodes) drawn to {out}")
+    return 0
+
+
+def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    p = sub.add_parser("build-memory", parents=[common], help="build the dual-basis memory bank of a run")
+    p.add_argument("--run", required=True, help="run folder with scenes/ and explore/streams/")
+    p.add_argument("--force", action="store_true", help="rebuild an existing memory bank")
+    p.set_defaults(func=cmd_build_memory)
+
+    p = sub.add_parser("show-memory", parents=[common], help="draw a scene's memory: map, forest clusters, dendrogram")
+    p.add_argument("run", help="run folder holding memory/bank")
+    p.add_argument("--scene", required=True, help="scene name")
+    p.add_argument("--out", required=True, help="picture file (.png, .pdf, .svg)")
+    p.add_argument("--level", type=int, default=-1, help="forest level that colours the nodes (default: the top)")
+    p.set_defaults(func=cmd_show_memory)
