@@ -41,12 +41,25 @@ def _bfs(free: np.ndarray, start: tuple[int, int], goal: tuple[int, int]) -> lis
 def line_of_sight(scene: Scene, p, q, step: float = 0.02) -> bool:
     """No wall between p and q (points sampled along the segment)."""
     n = max(2, int(math.dist(p, q) / step))
-    t = np.linspace(0.0, 1.0, n)
-    xs, ys = p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])
-    for w in scene.walls:
-        if (geometry.segment_distance(xs, ys, w.a, w.b) <= w.thickness / 2).any():
-            return False
-    return True
+    t = np.linspace(0.0, 1.0, n)[:, None]
+    xs, ys = p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])  # (n, 1)
+    a, b, half = _wall_arrays(scene)
+    dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]  # (W,)
+    u = np.clip(((xs - a[:, 0]) * dx + (ys - a[:, 1]) * dy) / np.maximum(dx * dx + dy * dy, 1e-12), 0.0, 1.0)
+    d = np.hypot(xs - (a[:, 0] + u * dx), ys - (a[:, 1] + u * dy))  # (n, W)
+    return not (d <= half).any()
+
+
+_WALLS: dict[int, tuple] = {}
+
+
+def _wall_arrays(scene: Scene):
+    key = id(scene)
+    if key not in _WALLS:
+        _WALLS[key] = (np.array([w.a for w in scene.walls], float).reshape(-1, 2),
+                       np.array([w.b for w in scene.walls], float).reshape(-1, 2),
+                       np.array([w.thickness / 2 for w in scene.walls], float))
+    return _WALLS[key]
 
 
 def synthetic_stream(scene: Scene, res: float = 0.1, spin_steps: int = 8) -> ExplorationStream:
