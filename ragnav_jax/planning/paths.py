@@ -23,6 +23,7 @@ def path_nodes(pred: Array, src: Array, dst: Array, max_len: int) -> Path:
     Returns Path(nodes (P,), mask (P,), found ()); `found` is False when dst is unreachable, or the
     path is longer than P nodes (then `nodes` is all -1).
     """
+    pred = jnp.asarray(pred, jnp.int32)
     src, dst = jnp.asarray(src, jnp.int32), jnp.asarray(dst, jnp.int32)
 
     def step(t, carry):
@@ -74,8 +75,8 @@ def edge_lengths(nodes: Array, mask: Array, positions: Array, weights: Array, ha
     Returns (lengths (P-1,) float32 with 0 on padding, rule2 (P-1,) bool: edge used the fallback).
     """
     weights = jnp.asarray(weights, jnp.float32)
-    if has_distance is None:
-        has_distance = jnp.isfinite(weights) & (weights > 0)
+    has_distance = jnp.isfinite(weights) & (weights > 0) if has_distance is None else jnp.asarray(has_distance, bool)
+    nodes, mask = jnp.asarray(nodes), jnp.asarray(mask)
     a, b = jnp.maximum(nodes[:-1], 0), jnp.maximum(nodes[1:], 0)
     live = mask[:-1] & mask[1:]
     xy = jnp.asarray(positions, jnp.float32)[:, :2]
