@@ -1,0 +1,143 @@
+"""CLI subcommands of the language stage: parse, episodes, check-parse."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from ragnav_jax.errors import UserError
+
+
+def cmd_parse(args, cfg) -> int:
+    from ragnav_jax.language.llm import parse_with_fallback
+
+    text = " ".join(args.instruction)
+    chain, note = parse_with_fallback(text, cfg.llm if args.llm else None)
+    if note:
+        print(f"ragnav: note: {note}", file=sys.stderr)
+    if not args.json:
+        print(chain.describe())
+        print()
+    print(json.dumps(chain.to_dict(), indent=None if args.json else 1))
+    return 0
+
+
+def _scene_source(path: str) -> tuple[Path, Path | None]:
+    """(scenes folder or file, run folder or None): accepts RUN, RUN/scenes or any scene folder/file."""
+    p = Path(path)
+    if p.is_dir() and (p / "scenes").is_dir():
+        return p / "scenes", p
+    if p.is_dir() and p.name == "scenes" and (p.parent / "config.yaml").exists():
+        return p, p.parent
+    return p, None
+
+
+def cmd_episodes(args, cfg) -> int:
+    from ragnav_jax.language.agreement import parse_agreement
+    from ragnav_jax.language.episodes import (
+        episode_summary,
+        generate_episodes,
+        save_episodes,
+        save_truth,
+        validate_episode_dict,
+    )
+    from ragnav_jax.runs import init_run
+    from ragnav_jax.tables import write_table
+    from ragnav_jax.world.scene import load_scene_set
+
+    src, run = _scene_source(args.scenes)
+    scenes = load_scene_set(src)
+    if args.out:
+        out = Path(args.out)
+    elif run is not None:
+        out = run / "episodes" / "episodes.jsonl"
+    else:
+        raise UserError("--out FILE is needed when --scenes is not a run folder (RUN or RUN/scenes)")
+    if out.suffix != ".jsonl":
+        raise UserError(f"--out {out}: use a .jsonl file name")
+    if out.exists() and not args.force:
+        raise UserError(f"{out}: already exists; pass --force to overwrite")
+    if run is not None:
+        init_run(run, cfg, "episodes")
+    pairs = generate_episodes(scenes, cfg.episodes, cfg.seed, progress=not args.quiet)
+    if not pairs:
+        raise UserError(f"{src}: no episodes could be generated (scenes without describable objects?)")
+    for k, p in enumerate(pairs, start=1):  # the schema promise, checked before writing
+        validate_episode_dict(p.episode.to_dict(), "<generated>", k)
+    save_episodes([p.episode for p in pairs], out)
+    truth_path = save_truth(pairs, out.with_name(out.stem + ".chains.jsonl"))
+    rows = episode_summary(pairs)
+    write_table(rows, out.with_name(out.stem + ".summary"))
+    report = parse_agreement(pairs)
+    report_path = out.with_name(out.stem + ".agreement.json")
+    report_path.write_text(json.dumps(report, indent=1) + "\n")
+    by_mod = {}
+    for p in pairs:
+        by_mod[p.episode.modality] = by_mod.get(p.episode.modality, 0) + 1
+    print(f"{len(pairs)} episodes over {len(scenes)} scene(s) written to {out}")
+    print("  per modality: " + ", ".join(f"{m}: {n}" for m, n in by_mod.items()))
+    print(f"  ground-truth chains: {truth_path}")
+    print(f"  parse agreement with the rule parser: {report['agree']}/{report['instructions']} "
+          f"({100 * report['rate']:.2f}%), details in {report_path}")
+    return 0
+
+
+def cmd_check_parse(args, cfg) -> int:
+    """Agreement of the parser with ground-truth chains written by `ragnav episodes`."""
+    from ragnav_jax.language.agreement import chain_differences
+    from ragnav_jax.language.episodes import EpisodeError, load_episodes, load_truth
+    from ragnav_jax.language.llm import parse_with_fallback
+    from ragnav_jax.language.types import ParseError
+
+    episodes = load_episodes(args.episodes)
+    truth_path = Path(args.truth) if args.truth else Path(args.episodes).with_name(Path(args.episodes).stem + ".chains.jsonl")
+    truth = load_truth(truth_path)
+    missing = [e.id for e in episodes if e.id not in truth]
+    if missing:
+        raise EpisodeError(f"{truth_path}: no ground-truth chain for episode '{missing[0]}' ({len(missing)} missing)")
+    ok, bad = 0, []
+    for e in episodes:
+        try:
+            chain, _ = parse_with_fallback(e.instruction, cfg.llm if args.llm else None)
+            diffs = chain_differences(chain, truth[e.id])
+        except ParseError as err:
+            diffs = [f"ParseError: {err}"]
+        if diffs:
+            bad.append((e, diffs))
+        else:
+            ok += 1
+    for e, diffs in bad[: args.show]:
+        print(f"{e.id}: {e.instruction}")
+        for d in diffs:
+            print(f"    {d}")
+    print(f"parse agreement: {ok}/{len(episodes)} ({100 * ok / len(episodes):.2f}%)")
+    return 0 if ok / len(episodes) >= args.min_rate else 1
+
+
+def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    # The instruction is free text (it may hold "x=3.5"), so overrides come with --set instead of positionally.
+    p = sub.add_parser("parse", help="parse an instruction into a task chain (text and JSON)")
+    p.add_argument("instruction", nargs="+", help='the instruction, e.g. "first go to the sofa, then the fridge"')
+    p.add_argument("--config", help="YAML config (for the llm section)")
+    p.add_argument("--set", dest="overrides", action="append", default=[], metavar="KEY=VALUE",
+                   help="dotted config override, repeatable (e.g. --set llm.base_url=http://127.0.0.1:8000/v1)")
+    p.add_argument("--quiet", action="store_true", help=argparse.SUPPRESS)
+    p.add_argument("--json", action="store_true", help="print only the JSON (one line)")
+    p.add_argument("--llm", action="store_true", help="use the LLM endpoint of the config (llm.base_url), with fallback")
+    p.set_defaults(func=cmd_parse)
+
+    p = sub.add_parser("episodes", parents=[common], help="generate multi-goal episodes for a scene set")
+    p.add_argument("--scenes", required=True, help="scene folder or file, or a run folder from `ragnav generate`")
+    p.add_argument("--out", help="episodes .jsonl file (default: RUN/episodes/episodes.jsonl for a run folder)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing episodes file")
+    p.set_defaults(func=cmd_episodes)
+
+    p = sub.add_parser("check-parse", parents=[common], help="parse agreement with ground-truth chains")
+    p.add_argument("episodes", help="episodes .jsonl written by `ragnav episodes`")
+    p.add_argument("--truth", help="ground-truth chains (default: EPISODES stem + .chains.jsonl)")
+    p.add_argument("--llm", action="store_true", help="parse with the configured LLM endpoint (with fallback)")
+    p.add_argument("--show", type=int, default=20, help="disagreements to print")
+    p.add_argument("--min-rate", type=float, default=0.99, help="exit 1 below this agreement")
+    p.set_defaults(func=cmd_check_parse, overrides_allowed=False)

@@ -1,0 +1,279 @@
+"""Closed-class word lists of the rule parser: function words, never object categories.
+
+The parser is open-vocabulary: any noun it has never seen can be a goal ("rowing machine",
+"defibrillator", "x-ray viewer"). What it needs to know are the words around the nouns: verbs and
+politeness that introduce a goal, determiners, relation and order phrases, descriptive adjectives
+(colours, materials, patterns, sizes, states), room words, sensor reading names, units, comparators
+and number words.
+"""
+
+from __future__ import annotations
+
+COLOURS = frozenset(
+    "red blue green grey gray black white brown beige yellow navy orange purple pink silver gold golden "
+    "cream teal turquoise violet maroon tan ivory charcoal olive khaki magenta cyan crimson lilac lavender "
+    "burgundy mint amber bronze copper rose scarlet emerald azure indigo".split()
+)
+INTENSIFIERS = frozenset("dark light pale bright deep pastel dusty".split())  # modifiers only before a colour
+MATERIALS = frozenset(
+    "wood wooden oak walnut pine cherry maple birch teak mahogany bamboo wicker rattan steel stainless chrome "
+    "brass iron metal metallic aluminium aluminum zinc tin glass plastic ceramic porcelain stone marble granite "
+    "brick concrete leather fabric velvet linen cotton wool woollen woolen upholstered acrylic enamel terracotta "
+    "clay cardboard rubber felt suede lacquered painted wrought cast-iron".split()
+)
+DESCRIPTORS = frozenset(
+    # patterns and styles
+    "striped plain persian patterned checked checkered chequered floral spotted dotted tartan plaid "
+    "antique modern vintage old new classic rustic retro contemporary traditional ornate fancy simple "
+    # sizes and shapes
+    "big small large little tiny huge giant tall short wide narrow single double twin queen king mini "
+    "round square rectangular oval compact "
+    # states
+    "open closed empty full broken clean dirty used healthy unhealthy wilting wilted dying dry fresh lush "
+    "fair sick warm hot cold cool frosted shiny dusty framed frameless glazed curtained sliding electric "
+    "digital portable folding upright variegated mirrored padded cushioned leafy flowering blooming "
+    "freestanding wall-mounted spare main".split()
+)
+MODIFIER_WORDS = COLOURS | MATERIALS | DESCRIPTORS
+# A hyphenated word is a modifier when its last part is one of these or ends in -ed ("gold-framed").
+HYPHEN_MODIFIER_TAILS = frozenset("size sized style styled tone toned colour color coloured colored".split())
+
+ROOM_WORDS = frozenset(
+    "kitchen bedroom bathroom study office hallway hall gym greenhouse garage lounge pantry nursery den attic "
+    "basement cellar corridor foyer entrance entryway lobby closet porch conservatory library workshop studio "
+    "playroom washroom lavatory loo laundry utility kitchenette bedchamber vestibule landing mudroom sunroom "
+    "storeroom boxroom".split()
+)
+ROOM_SUFFIXES = ("room", "area", "zone", "wing", "space")
+
+DETERMINERS = frozenset("the a an my our your their his her its this that these those some any".split())
+# Noun phrases made only of these words name no goal ("these", "the following", "all of them").
+FILLER_NOUNS = frozenset(
+    "it them that this there here one ones these those following each both all everything of three two four "
+    "five places place spots spot locations objects things items targets goals stops waypoints ones them".split()
+)
+PRONOUN_ANCHORS = frozenset("it that this them there one".split())
+
+# Relation phrases, longest first at match time; values are RELATION_TYPES.
+RELATION_PHRASES: dict[str, str] = {
+    "in the same room as": "in_room_with",
+    "in the same room with": "in_room_with",
+    "in the room with": "in_room_with",
+    "in the room that has": "in_room_with",
+    "in the room containing": "in_room_with",
+    "in the same room as the": "in_room_with",
+    "on top of": "on",
+    "on": "on",
+    "onto": "on",
+    "atop": "on",
+    "upon": "on",
+    "next to": "next_to",
+    "alongside": "next_to",
+    "adjacent to": "next_to",
+    "beside": "beside",
+    "besides": "beside",
+    "by": "by",
+    "near": "near",
+    "near to": "near",
+    "nearest to": "near",
+    "nearest": "near",
+    "closest to": "near",
+    "close to": "near",
+    "around": "near",
+    "at": "near",
+    "under": "under",
+    "underneath": "under",
+    "beneath": "under",
+    "below": "under",
+    "above": "above",
+    "over": "above",
+    "in front of": "in_front_of",
+    "behind": "behind",
+    "at the back of": "behind",
+    "opposite": "opposite",
+    "opposite to": "opposite",
+    "opposite of": "opposite",
+    "across from": "opposite",
+    "facing": "opposite",
+    "to the left of": "left_of",
+    "on the left of": "left_of",
+    "left of": "left_of",
+    "to the right of": "right_of",
+    "on the right of": "right_of",
+    "with": "with",
+    "that has": "with",
+    "which has": "with",
+    "having": "with",
+    "holding": "with",
+    "in": "in",
+    "inside": "in",
+    "inside of": "in",
+    "within": "in",
+    "into": "in",
+}
+# Words that may stand between a noun and its relation ("the lamp that is right next to the sofa").
+RELATIVE_LEADERS = frozenset(
+    "that which who is are sits stands lies located positioned placed situated sitting standing lying "
+    "resting found right just directly immediately somewhere mounted hanging kept".split()
+)
+
+# Reading names as written -> scene sensor key.
+READING_NAMES: dict[str, str] = {
+    "ndvi": "ndvi",
+    "vegetation index": "ndvi",
+    "greenness index": "ndvi",
+    "greenness": "ndvi",
+    "plant health": "ndvi",
+    "health index": "ndvi",
+    "temperature": "temperature_c",
+    "temp": "temperature_c",
+    "surface temperature": "temperature_c",
+    "heat": "temperature_c",
+    "relative humidity": "humidity_pct",
+    "humidity": "humidity_pct",
+    "moisture": "humidity_pct",
+    "rh": "humidity_pct",
+}
+
+# Gradable adjectives of the sensor readings: word -> (reading, +1 more / -1 less).
+GRADABLE: dict[str, tuple[str, int]] = {
+    "warm": ("temperature_c", 1),
+    "hot": ("temperature_c", 1),
+    "cold": ("temperature_c", -1),
+    "cool": ("temperature_c", -1),
+    "chilly": ("temperature_c", -1),
+    "healthy": ("ndvi", 1),
+    "green": ("ndvi", 1),
+    "lush": ("ndvi", 1),
+    "unhealthy": ("ndvi", -1),
+    "sick": ("ndvi", -1),
+    "wilted": ("ndvi", -1),
+    "humid": ("humidity_pct", 1),
+    "damp": ("humidity_pct", 1),
+    "wet": ("humidity_pct", 1),
+    "steamy": ("humidity_pct", 1),
+    "moist": ("humidity_pct", 1),
+    "dry": ("humidity_pct", -1),
+}
+SUPERLATIVES: dict[str, tuple[str, int]] = {
+    "warmest": ("temperature_c", 1),
+    "hottest": ("temperature_c", 1),
+    "coldest": ("temperature_c", -1),
+    "coolest": ("temperature_c", -1),
+    "chilliest": ("temperature_c", -1),
+    "healthiest": ("ndvi", 1),
+    "greenest": ("ndvi", 1),
+    "lushest": ("ndvi", 1),
+    "unhealthiest": ("ndvi", -1),
+    "sickest": ("ndvi", -1),
+    "dampest": ("humidity_pct", 1),
+    "wettest": ("humidity_pct", 1),
+    "steamiest": ("humidity_pct", 1),
+    "driest": ("humidity_pct", -1),
+    "dryest": ("humidity_pct", -1),
+}
+COMPARATIVES: dict[str, tuple[str, int]] = {
+    "warmer": ("temperature_c", 1),
+    "hotter": ("temperature_c", 1),
+    "colder": ("temperature_c", -1),
+    "cooler": ("temperature_c", -1),
+    "chillier": ("temperature_c", -1),
+    "healthier": ("ndvi", 1),
+    "greener": ("ndvi", 1),
+    "more humid": ("humidity_pct", 1),
+    "damper": ("humidity_pct", 1),
+    "wetter": ("humidity_pct", 1),
+    "drier": ("humidity_pct", -1),
+    "dryer": ("humidity_pct", -1),
+    "less humid": ("humidity_pct", -1),
+}
+EXTREME_WORDS = {
+    "highest": 1, "maximum": 1, "max": 1, "greatest": 1, "largest": 1, "biggest": 1, "top": 1, "peak": 1,
+    "lowest": -1, "minimum": -1, "min": -1, "smallest": -1, "least": -1,
+}
+
+# Comparator phrases -> comparator code.
+COMPARATOR_PHRASES: dict[str, str] = {
+    "above": "gt", "over": "gt", "greater than": "gt", "more than": "gt", "higher than": "gt", "bigger than": "gt",
+    "larger than": "gt", "exceeding": "gt", "in excess of": "gt", "upwards of": "gt", ">": "gt",
+    "at least": "ge", "no less than": "ge", "not less than": "ge", ">=": "ge", "≥": "ge", "minimum of": "ge",
+    "below": "lt", "under": "lt", "less than": "lt", "lower than": "lt", "smaller than": "lt", "<": "lt",
+    "at most": "le", "no more than": "le", "not more than": "le", "up to": "le", "<=": "le", "≤": "le",
+    "maximum of": "le",
+    "about": "approx", "around": "approx", "roughly": "approx", "approximately": "approx", "approx": "approx",
+    "approx.": "approx", "~": "approx", "circa": "approx", "nearly": "approx", "close to": "approx",
+    "near": "approx", "exactly": "approx", "=": "approx", "equal to": "approx", "of about": "approx",
+    "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
+}
+COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or greater": "ge", "or over": "ge",
+                      "or less": "le", "or lower": "le", "or below": "le", "or under": "le", "and up": "ge",
+                      "and above": "ge", "and below": "le"}
+
+NUMBER_WORDS = {
+    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+    "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16,
+    "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50,
+    "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
+}
+
+# Verbs and politeness that introduce a goal ("please head over to", "I need you to check").
+LEAD_PHRASES = (
+    "please", "kindly", "now", "ok", "okay", "hey", "so", "and", "also", "then", "next", "first of all", "first",
+    "firstly", "to begin with", "to begin", "to start with", "to start", "second", "secondly", "third", "thirdly",
+    "finally", "lastly", "last of all", "last", "after that", "afterwards", "afterward", "subsequently",
+    "from there", "once there", "after this", "plus", "but", "robot",
+    "could you", "can you", "would you", "will you", "would you mind", "i'd like you to", "i would like you to",
+    "i need you to", "i want you to", "i need to", "i want to", "i'd like to", "you should", "you need to",
+    "you must", "you have to", "we need to", "let's", "lets", "make sure to", "make sure you", "be sure to",
+    "try to", "go ahead and", "be so kind as to",
+    "start at", "start with", "start by going to", "start by visiting", "start from", "start off at", "start",
+    "begin at", "begin with", "begin by going to", "begin by visiting", "begin",
+    "continue on to", "continue to", "continue towards", "continue toward", "continue with", "carry on to",
+    "proceed to", "move on to", "go on to", "then on to", "on to", "onto",
+    "finish at", "finish with", "finish by going to", "finish by visiting", "finish up at", "finish",
+    "end at", "end up at", "end with", "end by visiting", "end", "stop at", "wrap up at", "conclude at",
+    "once you have visited", "once you've visited", "after visiting", "after going to", "after checking",
+    "after you visit", "after you check",
+)
+VERBS = (
+    "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
+    "navigate", "navigating", "proceed", "return", "come", "get", "getting", "make your way", "take me",
+    "take us", "bring me", "guide me", "lead me", "show me", "visit", "visiting", "find", "finding", "locate",
+    "locating", "search for", "searching for", "look for", "looking for", "seek", "check", "checking",
+    "check on", "check out", "inspect", "inspecting", "examine", "look at", "approach", "reach", "reaching",
+    "see", "seeing", "stop by", "swing by", "drop by", "pass by", "pay a visit to", "go and see", "go see",
+    "go and check", "tour", "roll", "fly", "steer",
+)
+VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "directly", "quickly", "right")
+VERB_PREPOSITIONS = ("to", "towards", "toward", "into", "for", "at", "by", "onto")
+TRAILING_FILLERS = (
+    "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
+    "thank you", "then", "for me", "if you can", "if possible", "nearby", "next", "also", "straight away",
+    "right away", "as soon as possible", "asap", "at the end", "at the start", "at the beginning",
+)
+
+
+def is_modifier(word: str, next_word: str | None = None) -> bool:
+    """True for a descriptive word that can precede a head noun ("red", "oak", "gold-framed")."""
+    if word in MODIFIER_WORDS:
+        return True
+    if word in INTENSIFIERS:
+        return next_word is not None and (next_word in COLOURS or next_word.split("-")[0] in COLOURS)
+    if word.endswith("ish") and word[:-3] in COLOURS:
+        return True
+    if "-" in word:
+        parts = word.split("-")
+        if all(p in COLOURS or p in INTENSIFIERS for p in parts) and parts[-1] in COLOURS:
+            return True
+        tail = parts[-1]
+        if len(parts) == 2 and parts[0] and (tail in HYPHEN_MODIFIER_TAILS or (len(tail) > 3 and tail.endswith("ed"))):
+            return True
+    return False
+
+
+def is_room_phrase(words: list[str] | tuple[str, ...]) -> bool:
+    """True when a noun phrase names a room ("kitchen", "living room", "office area")."""
+    if not words:
+        return False
+    last = words[-1]
+    return last in ROOM_WORDS or (last in ROOM_SUFFIXES and len(words) >= 2) or tuple(words) == ("room",)

@@ -1,0 +1,662 @@
+"""Deterministic, open-vocabulary instruction parser: free text -> TaskChain.
+
+    chain = parse_instruction("First go to the sink next to the table with the monitor, then the fern "
+                              "near (3.5, 2.0) with an NDVI above 0.6.")
+
+The parser knows function words only (lexicon.py): it has no list of object categories, so any noun
+phrase can be a goal. It works in passes over the lower-cased text:
+
+1. number words before units or after comparators become digits ("about sixty degrees");
+2. coordinate hints ("(3.5, 2.0)", "x=3.5, y=2", "at about 3.5, 2") and sensor phrases ("NDVI above
+   0.6", "about 55 degrees", "under 0.2", "warmest", "with the lowest NDVI") are cut out into
+   placeholders, so their commas and numbers cannot confuse the later passes; half-written numbers
+   left behind are errors;
+3. free-order phrases ("in any order", "in whatever order is quickest") set the order and are removed;
+4. the text is split at punctuation and connectors (then, and, after that, followed by, finally...);
+5. each segment loses its politeness and verb ("I need you to head over to") and is read as a noun
+   phrase (modifiers + head) followed by relations ("near", "next to", "on", "with", "in the room
+   with"...), nested right-branching; "in <room word>" is a room constraint;
+6. segments with no noun (", about 60 degrees,", "near the sofa") join the previous goal; "X after Y"
+   and "X, but first Y" swap; pronoun anchors ("next to it") refer to the previous goal.
+
+Anything it cannot read raises ParseError (a UserError) saying what was missing; nothing else escapes.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+import unicodedata
+
+from ragnav_jax.language import lexicon as L
+from ragnav_jax.language.types import (
+    Location,
+    ParseError,
+    Relation,
+    SensorConstraint,
+    Subgoal,
+    Target,
+    TaskChain,
+    derive_dependencies,
+)
+
+MAX_CHARS = 2000
+MAX_SUBGOALS = 64
+
+# ----------------------------------------------------------------------------------------------------
+# Regular expressions (built once from the lexicon)
+
+
+def _alt(phrases) -> str:
+    """Regex alternation of phrases, longest first, with word boundaries around alphabetic ends."""
+    out = []
+    for p in sorted(set(phrases), key=len, reverse=True):
+        e = re.escape(p).replace(r"\ ", r"\s+")
+        if p[0].isalnum():
+            e = r"\b" + e
+        if p[-1].isalnum():
+            e = e + r"\b"
+        out.append(e)
+    return "(?:" + "|".join(out) + ")"
+
+
+NUM = r"(?<![\w.])[-+]?(?:\d+(?:\.\d+)?|\.\d+)(?![\d.]?\d)"
+_NUM_END = r"(?!\.\d)"
+READ_ALT = _alt(L.READING_NAMES)
+CMP_ALT = _alt(L.COMPARATOR_PHRASES)
+EXT_ALT = _alt(L.EXTREME_WORDS)
+UNIT = (
+    r"(?:°\s*[cf]\b|°|degrees?(?:\s+(?:celsius|centigrade|fahrenheit|c|f)\b)?|deg\b|celsius\b|centigrade\b"
+    r"|fahrenheit\b|c\b|f\b|%|percent\b|per\s+cent\b)"
+)
+POST = r"(?:\s+(?P<post>or\s+(?:more|higher|above|greater|over|less|lower|below|under)|and\s+(?:up|above|below))\b)?"
+NOT_LENGTH = (
+    r"(?!\s*(?:m|cm|mm|km|meters?|metres?|feet|foot|ft|steps?|minutes?|mins?|seconds?|secs?|hours?|inch(?:es)?"
+    r"|people|persons?|chairs?|times?|x)\b)"
+)
+
+_NW_ALT = "|".join(sorted(list(L.NUMBER_WORDS) + ["hundred", "point"], key=len, reverse=True))
+_NW_SEQ = rf"(?:(?:a\s+)?(?:{_NW_ALT})(?:(?:\s+|-)(?:and\s+)?(?:{_NW_ALT}))*)"
+_NW_AFTER_CMP = re.compile(rf"(?P<pre>{CMP_ALT}\s+|{READ_ALT}\s+(?:of|is|at)\s+)(?P<nw>\b{_NW_SEQ}\b)")
+_NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|°|percent\b|per\s+cent\b|%))")
+
+_LOC_LEAD = (
+    r"(?:(?:(?:which|that)\s+is\s+|located\s+|positioned\s+|situated\s+|placed\s+)?"
+    r"(?:at|near|around|by|close\s+to|next\s+to)\s+)?"
+    r"(?:(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:the\s+)?"
+    r"(?:(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:of\s+)?"
+)
+_PAIR_PAREN = rf"[(\[]\s*(?:x\s*[=:]?\s*)?(?P<x1>{NUM})\s*[,;]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM})\s*[)\]]"
+_PAIR_XY = rf"\bx\s*(?:=|:|is)?\s*(?P<x2>{NUM})\s*(?:,|;|and)?\s*y\s*(?:=|:|is)?\s*(?P<y2>{NUM}){_NUM_END}"
+_LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
+_LOC2 = re.compile(
+    r"(?:\b(?:located|positioned|situated|placed)\s+)?\b(?:at|coordinates?|coords?|position|point|location)\s+"
+    r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
+    rf"(?P<x3>{NUM})\s*,\s*(?P<y3>{NUM}){_NUM_END}"
+)
+
+_S_LEAD = r"(?:\b(?:with|having|that\s+has|which\s+has|whose|where)\s+(?:(?:an?|the|its|their)\s+)?)?"
+_SENS_A = re.compile(
+    _S_LEAD + rf"(?:\b(?:current|measured)\s+)?(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|measurement))?"
+    r"(?:\s+(?:is|of|reads|reading|at|that\s+is|which\s+is|measuring|measures|showing|shows|registering))?"
+    rf"\s*(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST
+)
+_SENS_B = re.compile(
+    r"(?:\b(?:with|having|at|of|showing|reading)\s+(?:an?\s+)?)?"
+    rf"(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST + rf"\s*(?P<rd>{READ_ALT})"
+)
+_COMPARATIVE = re.compile(
+    rf"\b(?P<adj>{_alt(L.COMPARATIVES)})\s+than\s+(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?"
+)
+_SENS_C = re.compile(
+    r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
+    rf"(?:(?P<cmp>{CMP_ALT})\s*(?P<num>{NUM}){_NUM_END}{NOT_LENGTH}\s*(?P<unit>{UNIT})?" + POST
+    + rf"|(?P<num2>{NUM}){_NUM_END}\s*(?P<unit2>{UNIT}))"
+)
+_SUPER_READ = re.compile(
+    r"(?:\b(?:with|having|that\s+has|which\s+has|showing|of)\s+)?(?:\b(?:the|its)\s+)?"
+    rf"(?P<ext>{EXT_ALT})(?:\s+|-)(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?\b"
+)
+_SUPER_READ2 = re.compile(
+    rf"\b(?:whose|where\s+the|with\s+(?:the|an?|its))\s+(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?"
+    rf"\s+is\s+(?:the\s+)?(?P<ext>{EXT_ALT})\b"
+)
+_SUPER_ADJ = re.compile(
+    rf"(?:\b(?P<sup>{_alt(L.SUPERLATIVES)})|\b(?P<ml>most|least)\s+(?P<adj>{_alt(L.GRADABLE)}))"
+)
+
+# Leftovers that mean a number was meant but could not be read.
+_BAD_AFTER_READING = re.compile(rf"(?P<all>{READ_ALT}\s+(?:is\s+|of\s+)?{CMP_ALT}\s+(?P<bad>[^\s⟪⟫]+))")
+_BAD_BEFORE_UNIT = re.compile(r"(?P<all>(?P<bad>[^\s⟪⟫]+)\s*(?:\bdegrees?\b|°|\bpercent\b))")
+_BAD_PAREN = re.compile(r"[(\[][^()\[\]]*\d[^()\[\]]*[)\]]")
+_BAD_XY = re.compile(r"\b[xy]\s*[=:]\s*\S*")
+_MULTIDOT = re.compile(r"\d+\.\d+\.\d")
+
+_FREE = re.compile(
+    r"\b(?:in|by|following|using)\s+(?:any|whatever|whichever|an?\s+(?:efficient|optimal|sensible|good|smart)|"
+    r"the\s+(?:best|most\s+efficient|quickest|fastest|shortest|optimal|cheapest|most\s+convenient|smartest))"
+    r"\s+(?:order|sequence)(?:\s+(?:is|you\s+(?:like|want|prefer|choose|wish|think\s+best)|that\s+is|works?|seems?"
+    r"|makes\s+sense)(?:\s+(?:quickest|fastest|shortest|best|most\s+efficient|efficient|optimal|for\s+you|fine"
+    r"|cheapest|closest|easiest))?)*"
+    r"|\b(?:the\s+)?order\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+(?:matter|important)"
+    r"|\b(?:in\s+)?no\s+particular\s+order|\bany\s+order\s+(?:is\s+fine|works|will\s+do)"
+    r"|\bwhichever\s+(?:order|way)\s+is\s+(?:quickest|fastest|shortest|best|closest|easiest)"
+    r"|\b(?:the\s+)?(?:visiting\s+)?order\s+is\s+up\s+to\s+you|\bin\s+any\s+sequence"
+    r"|\b(?:taking|via|using|along|by)\s+the\s+(?:shortest|quickest|fastest)\s+(?:route|path|way)"
+    r"|\bas\s+(?:efficiently|quickly)\s+as\s+possible"
+)
+
+_CONNECTORS = (
+    "and then", "and finally", "and lastly", "and after that", "then", "after that", "afterwards", "afterward",
+    "after this", "followed by", "and", "finally", "lastly", "as well as", "plus", "but first", "before that",
+    "before", "after", "subsequently",
+)
+_SPLIT = re.compile(
+    r"(?P<c>[,;:!?]|\.(?!\d)|\s&\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
+)
+_TOKEN = re.compile(r"⟪[a-z]+⟫|[^\W_]+(?:['\-][^\W_]+)*")
+SWAP_BACK = ("after", "but first", "before that")  # "X after Y": Y comes first
+
+
+def _phrase_tuples(phrases) -> list[tuple[str, ...]]:
+    return sorted({tuple(p.split()) for p in phrases}, key=len, reverse=True)
+
+
+_LEADS = _phrase_tuples(L.LEAD_PHRASES)
+_VERBS = _phrase_tuples(L.VERBS)
+_TRAILS = _phrase_tuples(L.TRAILING_FILLERS)
+_RELS = sorted(((tuple(k.split()), v) for k, v in L.RELATION_PHRASES.items()), key=lambda kv: -len(kv[0]))
+_ROOM_PREPS = frozenset({"in", "inside", "within", "into", "inside of"})
+
+# ----------------------------------------------------------------------------------------------------
+# Numbers
+
+
+def _to_float(s: str, what: str) -> float:
+    try:
+        v = float(s)
+    except ValueError:
+        raise ParseError(f"could not read the number '{s}' in {what}") from None
+    if not math.isfinite(v):
+        raise ParseError(f"the number '{s}' in {what} is too large")
+    return v
+
+
+def words_to_number(text: str) -> float | None:
+    """'sixty five' -> 65.0, 'a hundred and twenty' -> 120.0, 'zero point six' -> 0.6; None if unreadable."""
+    words = [w for w in re.split(r"[\s-]+", text.strip()) if w and w not in ("and", "a")]
+    if not words:
+        return None
+    if "point" in words:
+        k = words.index("point")
+        whole = words_to_number(" ".join(words[:k])) if k else 0.0
+        digits = words[k + 1 :]
+        if whole is None or not digits or any(L.NUMBER_WORDS.get(d, 99) > 9 for d in digits):
+            return None
+        return float(f"{int(whole)}." + "".join(str(L.NUMBER_WORDS[d]) for d in digits))
+    total, current = 0, 0
+    for w in words:
+        if w == "hundred":
+            current = max(current, 1) * 100
+        elif w in L.NUMBER_WORDS:
+            v = L.NUMBER_WORDS[w]
+            if current % 10 != 0 and v < 10 or (current % 100 != 0 and v >= 10):
+                return None  # "five six", "twenty thirty"
+            current += v
+        else:
+            return None
+    return float(total + current)
+
+
+def _number_words(s: str) -> str:
+    def repl(m: re.Match) -> str:
+        v = words_to_number(m.group("nw"))
+        if v is None:
+            return m.group(0)
+        num = f"{v:g}"
+        return (m.group("pre") if "pre" in m.groupdict() and m.group("pre") else "") + num
+
+    s = _NW_AFTER_CMP.sub(repl, s)
+    return _NW_BEFORE_UNIT.sub(repl, s)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Placeholders: coordinates and sensor phrases are cut out before splitting.
+
+
+def _key(i: int) -> str:
+    letters = ""
+    i += 1
+    while i:
+        i, r = divmod(i - 1, 26)
+        letters = chr(97 + r) + letters
+    return f"⟪{letters}⟫"
+
+
+@dataclasses.dataclass
+class _Marks:
+    locations: dict[str, Location] = dataclasses.field(default_factory=dict)
+    sensors: dict[str, SensorConstraint] = dataclasses.field(default_factory=dict)
+    text: dict[str, str] = dataclasses.field(default_factory=dict)
+
+    def add(self, original: str, location: Location | None = None, sensor: SensorConstraint | None = None) -> str:
+        k = _key(len(self.text))
+        self.text[k] = original.strip()
+        if location is not None:
+            self.locations[k] = location
+        if sensor is not None:
+            self.sensors[k] = sensor
+        return f" {k} "
+
+    def restore(self, s: str) -> str:
+        out = re.sub(r"⟪[a-z]+⟫", lambda m: self.text.get(m.group(0), ""), s)
+        return re.sub(r"\s+", " ", out).strip(" ,;:.")
+
+
+def _unit_code(unit: str | None) -> str:
+    if not unit:
+        return ""
+    u = re.sub(r"\s+", " ", unit)
+    if u.endswith("f") or "fahrenheit" in u:
+        return "f"
+    if u in ("%", "percent", "per cent"):
+        return "%"
+    return "c"
+
+
+def _sensor(reading: str | None, comparator: str, num: str | None, unit: str | None, span: str) -> SensorConstraint:
+    code = _unit_code(unit)
+    value = None if num is None else _to_float(num, f"'{span.strip()}'")
+    if reading is None:
+        if code in ("c", "f"):
+            reading = "temperature_c"
+        elif code == "%":
+            reading = "humidity_pct"
+        else:
+            reading = "ndvi" if value is not None and abs(value) <= 1.0 else "temperature_c"
+    if value is not None and code == "f" and reading == "temperature_c":
+        value = round((value - 32.0) * 5.0 / 9.0, 4)
+    return SensorConstraint(reading, comparator, value, code)
+
+
+def _cmp_code(cmp: str | None, post: str | None) -> str:
+    if post:
+        return L.COMPARATOR_POSTFIX[re.sub(r"\s+", " ", post)]
+    if not cmp:
+        return "approx"
+    return L.COMPARATOR_PHRASES[re.sub(r"\s+", " ", cmp)]
+
+
+def _cut(s: str, marks: _Marks) -> str:
+    def loc(m: re.Match) -> str:
+        g = m.groupdict()
+        x = g.get("x1") or g.get("x2") or g.get("x3")
+        y = g.get("y1") or g.get("y2") or g.get("y3")
+        what = f"the coordinates '{m.group(0).strip()}'"
+        return marks.add(m.group(0), location=Location(_to_float(x, what), _to_float(y, what)))
+
+    s = _LOC1.sub(loc, s)
+    s = _LOC2.sub(loc, s)
+
+    def with_reading(m: re.Match) -> str:
+        rd = L.READING_NAMES[re.sub(r"\s+", " ", m.group("rd"))]
+        c = _sensor(rd, _cmp_code(m.group("cmp"), m.group("post")), m.group("num"), m.group("unit"), m.group(0))
+        return marks.add(m.group(0), sensor=c)
+
+    def comparative(m: re.Match) -> str:
+        rd, sign = L.COMPARATIVES[re.sub(r"\s+", " ", m.group("adj"))]
+        c = _sensor(rd, "gt" if sign > 0 else "lt", m.group("num"), m.group("unit"), m.group(0))
+        return marks.add(m.group(0), sensor=c)
+
+    def superlative_reading(m: re.Match) -> str:
+        rd = L.READING_NAMES[re.sub(r"\s+", " ", m.group("rd"))]
+        sign = L.EXTREME_WORDS[m.group("ext")]
+        return marks.add(m.group(0), sensor=SensorConstraint(rd, "max" if sign > 0 else "min"))
+
+    def superlative_adj(m: re.Match) -> str:
+        if m.group("sup"):
+            rd, sign = L.SUPERLATIVES[m.group("sup")]
+        else:
+            rd, sign = L.GRADABLE[m.group("adj")]
+            sign = sign if m.group("ml") == "most" else -sign
+        return marks.add(m.group(0), sensor=SensorConstraint(rd, "max" if sign > 0 else "min"))
+
+    def bare(m: re.Match) -> str:
+        if m.group("num2") is not None:
+            c = _sensor(None, "approx", m.group("num2"), m.group("unit2"), m.group(0))
+        else:
+            c = _sensor(None, _cmp_code(m.group("cmp"), m.group("post")), m.group("num"), m.group("unit"), m.group(0))
+        return marks.add(m.group(0), sensor=c)
+
+    s = _SUPER_READ2.sub(superlative_reading, s)
+    s = _SUPER_READ.sub(superlative_reading, s)
+    s = _COMPARATIVE.sub(comparative, s)
+    s = _SENS_A.sub(with_reading, s)
+    s = _SENS_B.sub(with_reading, s)
+    s = _SENS_C.sub(bare, s)
+    s = _SUPER_ADJ.sub(superlative_adj, s)
+
+    # What is left of a number-bearing phrase could not be read.
+    for rx, what in ((_BAD_AFTER_READING, "a sensor value"), (_BAD_BEFORE_UNIT, "a sensor value")):
+        m = rx.search(s)
+        if m:
+            raise ParseError(f"could not read {what}: '{marks.restore(m.group('all'))}' (write a number, e.g. 'NDVI above 0.6' or 'about 55 degrees')")
+    m = _BAD_PAREN.search(s)
+    if m:
+        raise ParseError(f"could not read the coordinates '{m.group(0)}' (write them like (3.5, 2.0) or x=3.5, y=2)")
+    m = _BAD_XY.search(s)
+    if m:
+        raise ParseError(f"could not read the coordinates '{m.group(0).strip()}' (write them like x=3.5, y=2)")
+    return s
+
+
+# ----------------------------------------------------------------------------------------------------
+# Segments
+
+
+@dataclasses.dataclass
+class _Node:
+    """A noun phrase under construction: words plus relations to anchor nodes."""
+
+    words: list[str]
+    relations: list[tuple[str, _Node]] = dataclasses.field(default_factory=list)
+
+    @property
+    def pronoun(self) -> bool:
+        return bool(self.words) and all(w in L.PRONOUN_ANCHORS for w in self.words)
+
+    def target(self, antecedent: Target | None) -> Target:
+        if self.pronoun and antecedent is not None:
+            base = dataclasses.replace(antecedent, relations=())
+        else:
+            attrs, head = split_noun_phrase(self.words)
+            base = Target(" ".join(self.words), head, attrs)
+        rels = tuple(Relation(t, n.target(antecedent)) for t, n in self.relations)
+        return dataclasses.replace(base, relations=base.relations + rels)
+
+
+@dataclasses.dataclass
+class _Piece:
+    node: _Node | None  # None: the segment names no goal of its own
+    room: str | None = None
+    locations: list[Location] = dataclasses.field(default_factory=list)
+    sensors: list[SensorConstraint] = dataclasses.field(default_factory=list)
+    relations: list[tuple[str, _Node]] = dataclasses.field(default_factory=list)
+    attrs_only: list[str] = dataclasses.field(default_factory=list)
+    connector: str = ""
+    texts: list[str] = dataclasses.field(default_factory=list)
+    ellipsis: bool = False  # "the coldest one": the head is the previous goal's
+
+    @property
+    def empty(self) -> bool:
+        return not (self.room or self.locations or self.sensors or self.relations or self.attrs_only)
+
+
+def split_noun_phrase(words: list[str] | tuple[str, ...]) -> tuple[tuple[str, ...], str]:
+    """('grey', 'fabric', 'coffee', 'table') -> (('grey', 'fabric'), 'coffee table').
+
+    Leading descriptive words are attributes (an intensifier joins its colour: 'dark green'); the
+    rest is the head, which keeps at least the last word, so unseen compounds stay whole.
+    """
+    words = list(words)
+    k = 0
+    while k < len(words) - 1 and L.is_modifier(words[k], words[k + 1]):
+        k += 1
+    attrs: list[str] = []
+    for w in words[:k]:
+        if attrs and attrs[-1] in L.INTENSIFIERS:
+            attrs[-1] = f"{attrs[-1]} {w}"
+        else:
+            attrs.append(w)
+    return tuple(attrs), " ".join(words[k:])
+
+
+def _strip_phrases(tokens: list[str], phrases, at_start: bool = True) -> tuple[list[str], bool]:
+    for p in phrases:
+        n = len(p)
+        if len(tokens) >= n and (tuple(tokens[:n]) if at_start else tuple(tokens[-n:])) == p:
+            return (tokens[n:] if at_start else tokens[:-n]), True
+    return tokens, False
+
+
+def _strip_leaders(tokens: list[str]) -> list[str]:
+    changed = True
+    while changed and tokens:
+        tokens, changed = _strip_phrases(tokens, _LEADS)
+        if changed:
+            continue
+        tokens, changed = _strip_phrases(tokens, _VERBS)
+        if changed:
+            while tokens and tokens[0] in L.VERB_PARTICLES:
+                tokens = tokens[1:]
+            if tokens and tokens[0] in L.VERB_PREPOSITIONS and len(tokens) > 1:
+                tokens = tokens[1:]
+            continue
+        if tokens and tokens[0] in ("to", "towards", "toward") and len(tokens) > 1:
+            tokens, changed = tokens[1:], True
+    # An unknown verb before a determiner ("photograph the fridge"): drop it.
+    for k in range(1, min(4, len(tokens) - 1)):
+        if tokens[k] in ("the", "a", "an", "my", "our", "your"):
+            before = tokens[:k]
+            if all(w.isalpha() and not L.is_modifier(w) and _relation_at(before, i) is None for i, w in enumerate(before)):
+                tokens = tokens[k:]
+            break
+    changed = True
+    while changed and tokens:
+        tokens, changed = _strip_phrases(tokens, _TRAILS, at_start=False)
+    return tokens
+
+
+def _relation_at(tokens: list[str], i: int) -> tuple[str, int] | None:
+    """(relation type, tokens used) when a relation phrase starts at tokens[i]."""
+    for phrase, rtype in _RELS:
+        n = len(phrase)
+        if tuple(tokens[i : i + n]) == phrase:
+            return rtype, n
+    return None
+
+
+def _boundary_at(tokens: list[str], i: int) -> tuple[str, int, bool] | None:
+    """A relation starting at i, possibly after relative-clause words: (type, tokens used, is_room_prep)."""
+    j = i
+    while j < len(tokens) and tokens[j] in L.RELATIVE_LEADERS and j - i < 4:
+        r = _relation_at(tokens, j)
+        if r is not None:
+            break
+        j += 1
+    r = _relation_at(tokens, j)
+    if r is None:
+        return None
+    return r[0], j - i + r[1], tokens[j] in _ROOM_PREPS and r[1] <= 2
+
+
+def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
+    while i < len(tokens) and tokens[i] in L.DETERMINERS:
+        i += 1
+    if tuple(tokens[i : i + 2]) == ("one", "of"):
+        i += 2
+        while i < len(tokens) and tokens[i] in L.DETERMINERS:
+            i += 1
+    words = []
+    while i < len(tokens):
+        if words and _boundary_at(tokens, i) is not None:
+            break
+        if not words and _relation_at(tokens, i) is not None:
+            break
+        words.append(tokens[i])
+        i += 1
+    return words, i
+
+
+def _room_name(words: list[str]) -> str:
+    if len(words) >= 2 and words[-1] in L.ROOM_SUFFIXES and words[-1] != "room":
+        words = words[:-1]
+    return " ".join(words)
+
+
+def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
+    raw = _TOKEN.findall(seg)
+    piece = _Piece(node=None, connector=connector, texts=[marks.restore(seg)])
+    tokens = []
+    for t in raw:
+        if t.startswith("⟪"):
+            if t in marks.locations:
+                piece.locations.append(marks.locations[t])
+            if t in marks.sensors:
+                piece.sensors.append(marks.sensors[t])
+        else:
+            tokens.append(t)
+    tokens = _strip_leaders(tokens)
+    words, i = _read_np(tokens, 0)
+    top = _Node(words)
+    current = top
+    while i < len(tokens):
+        b = _boundary_at(tokens, i)
+        if b is None:  # cannot happen after _read_np, but never loop forever
+            i += 1
+            continue
+        rtype, used, room_prep = b
+        i += used
+        anchor, i = _read_np(tokens, i)
+        if room_prep and L.is_room_phrase(anchor):
+            piece.room = piece.room or _room_name(anchor)
+            continue
+        if not anchor or all(w in L.FILLER_NOUNS and w not in L.PRONOUN_ANCHORS for w in anchor):
+            continue  # "with" before a sensor phrase, "nearby"
+        node = _Node(anchor)
+        current.relations.append((rtype, node))
+        current = node
+    if words and words[-1] in ("one", "ones") and (len(words) > 1 or piece.sensors or piece.locations or
+                                                      piece.room or top.relations):
+        # "the coldest one", "the red one near the door": the head of the previous goal, elided.
+        top.words = words[:-1]
+        piece.node, piece.ellipsis = top, True
+        return piece
+    if not words or all(w in L.FILLER_NOUNS for w in words):
+        piece.relations = top.relations
+    elif all(L.is_modifier(w, words[k + 1] if k + 1 < len(words) else "red") for k, w in enumerate(words)) and not (
+        top.relations or piece.room or piece.locations or piece.sensors
+    ):
+        piece.attrs_only = list(words)  # "the big, red chair": "the big" describes the next goal
+    else:
+        piece.node = top
+    return piece
+
+
+# ----------------------------------------------------------------------------------------------------
+
+
+def _normalise(text) -> str:
+    if not isinstance(text, str):
+        raise ParseError(f"an instruction must be text, got {type(text).__name__}")
+    if len(text) > MAX_CHARS:
+        raise ParseError(f"the instruction is too long ({len(text)} characters; at most {MAX_CHARS})")
+    t = unicodedata.normalize("NFKC", text)
+    t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
+    t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
+    t = re.sub(r"\s+", " ", t).strip()
+    if not t:
+        raise ParseError("the instruction is empty: say where to go, e.g. 'go to the sofa, then the fridge'")
+    return t
+
+
+def parse_instruction(text: str) -> TaskChain:
+    """Parses a free-text multi-goal instruction into a TaskChain; raises ParseError on bad input."""
+    s = _normalise(text)
+    m = _MULTIDOT.search(s)
+    if m:
+        raise ParseError(f"could not read the number starting '{m.group(0)}'")
+    marks = _Marks()
+    s = _number_words(s)
+    s = _cut(s, marks)
+    order = "strict"
+    if _FREE.search(s):
+        order = "free"
+        s = _FREE.sub(" ", s)
+
+    parts = _SPLIT.split(s)
+    # re.split with one named group yields [seg, connector, seg, connector, ...]
+    segments = [(parts[k - 1].strip() if k else "", parts[k]) for k in range(0, len(parts), 2)]
+    pieces = [_parse_segment(seg, marks, re.sub(r"\s+", " ", conn)) for conn, seg in segments if seg.strip()]
+
+    goals: list[_Piece] = []
+    pending: _Piece | None = None
+    for p in pieces:
+        if p.node is None:
+            if p.empty:
+                continue
+            if p.attrs_only or not goals:
+                pending = p if pending is None else _merge(pending, p)
+            else:
+                _merge(goals[-1], p)
+            continue
+        if pending is not None:
+            p = _merge(p, pending, prefix=True)
+            pending = None
+        if p.ellipsis:
+            head = goals[-1].node.words[-len(split_noun_phrase(goals[-1].node.words)[1].split()) :] if goals else []
+            p.node.words = p.node.words + (head or ["one"])
+        goals.append(p)
+    if pending is not None and goals:
+        _merge(goals[-1], pending)
+    if not goals:
+        raise ParseError(
+            "no recognisable goal in the instruction: name at least one place or object to go to, "
+            "e.g. 'go to the sofa' or 'find the red chair near the desk'"
+        )
+    if len(goals) > MAX_SUBGOALS:
+        raise ParseError(f"too many goals ({len(goals)}; at most {MAX_SUBGOALS})")
+    # Reorder: "X after Y" / "X, but first Y" put Y before X; "before Y, X" puts X before Y.
+    k = 0
+    while k < len(goals):
+        c = goals[k].connector
+        if k > 0 and c in SWAP_BACK:
+            goals[k - 1], goals[k] = goals[k], goals[k - 1]
+            goals[k - 1].connector = ""
+        elif k == 0 and c == "before" and len(goals) > 1:
+            goals[0], goals[1] = goals[1], goals[0]
+            goals[1].connector = ""
+            k += 1
+        k += 1
+
+    subgoals: list[Subgoal] = []
+    for idx, g in enumerate(goals):
+        antecedent = subgoals[-1].target if subgoals else None
+        target = g.node.target(antecedent)
+        extra = tuple(Relation(t, n.target(antecedent)) for t, n in g.relations)
+        if extra:
+            target = dataclasses.replace(target, relations=target.relations + extra)
+        subgoals.append(
+            Subgoal(
+                index=idx,
+                target=target,
+                room=g.room,
+                location=g.locations[0] if g.locations else None,
+                sensors=tuple(g.sensors),
+                text=" ".join(t for t in g.texts if t),
+            )
+        )
+    subgoals_t = tuple(subgoals)
+    return TaskChain(
+        instruction=text.strip(),
+        subgoals=subgoals_t,
+        order=order,
+        dependencies=derive_dependencies(subgoals_t, order),
+        parser="rules",
+    )
+
+
+def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
+    """Adds a noun-less piece's constraints to a goal piece (in place; returns it)."""
+    into.room = into.room or extra.room
+    into.locations += extra.locations
+    into.sensors += extra.sensors
+    into.relations += extra.relations
+    if extra.attrs_only:
+        if into.node is not None:
+            into.node.words = extra.attrs_only + into.node.words
+        else:
+            into.attrs_only = extra.attrs_only + into.attrs_only
+    into.texts = (extra.texts + into.texts) if prefix else (into.texts + extra.texts)
+    return into
