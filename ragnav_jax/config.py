@@ -145,6 +145,135 @@ class MemoryConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class LLMConfig:
+    """Optional OpenAI-compatible chat endpoint, shared by the instruction parser and the captioner.
+
+    An empty base_url means off: everything then runs offline and deterministically. The API key is
+    read from the environment variable named by api_key_env at call time and is never stored.
+    """
+
+    base_url: str = ""  # e.g. http://127.0.0.1:8000/v1 ; "" = no LLM
+    model: str = ""
+    api_key_env: str = "OPENAI_API_KEY"  # name of the environment variable holding the key (may be unset)
+    timeout_s: float = 30.0
+    temperature: float = 0.0
+    use_for_parsing: bool = True  # instruction -> TaskChain (falls back to the rule parser on any failure)
+    use_for_captions: bool = True  # memory captioner
+
+    def __post_init__(self):
+        _check(self.timeout_s > 0, "llm.timeout_s", "must be > 0")
+        _check(0.0 <= self.temperature <= 2.0, "llm.temperature", "must be in [0, 2]")
+        _check(
+            self.base_url == "" or self.base_url.startswith(("http://", "https://")),
+            "llm.base_url",
+            "must be empty (off) or start with http:// or https://",
+        )
+
+
+@dataclasses.dataclass(frozen=True)
+class EpisodesConfig:
+    """Episode generator settings (ragnav episodes): counts per scene and modality, goals, order mix."""
+
+    text: int = 10  # episodes per scene whose goals are told apart by words only
+    text_location: int = 5  # ... where a coordinate hint is the disambiguator
+    text_location_sensor: int = 5  # ... where a sensor reading or superlative is
+    min_goals: int = 1
+    max_goals: int = 5
+    strict_fraction: float = 0.5  # share of episodes with a strict visiting order (the rest: free)
+    near_distance: float = 1.0  # metres between object boxes for near / next to / beside / by
+    location_radius: float = 1.0  # metres: a coordinate hint refers to objects within this of the point
+    location_margin: float = 2.0  # metres: no other candidate within this of a generated hint
+    relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
+    room_prob: float = 0.3  # chance of naming the room even when not needed
+    synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
+
+    def __post_init__(self):
+        for k in ("text", "text_location", "text_location_sensor"):
+            _check(getattr(self, k) >= 0, f"episodes.{k}", "must be >= 0")
+        _check(1 <= self.min_goals <= self.max_goals <= 8, "episodes.min_goals", "need 1 <= min_goals <= max_goals <= 8")
+        for k in ("strict_fraction", "relation_prob", "room_prob", "synonym_prob"):
+            _check(0.0 <= getattr(self, k) <= 1.0, f"episodes.{k}", "must be in [0, 1]")
+        _check(self.near_distance > 0, "episodes.near_distance", "must be > 0")
+        _check(self.location_radius > 0, "episodes.location_radius", "must be > 0")
+        _check(self.location_margin >= self.location_radius, "episodes.location_margin", "must be >= location_radius")
+
+
+@dataclasses.dataclass(frozen=True)
+class MemoryConfig:
+    """Dual-basis memory (ragnav build-memory): key poses, captions, encoder, map edges, semantic forest."""
+
+    # key poses (memory/keyposes.py)
+    keyframe_rule: str = "both"  # spacing | novelty | both
+    keyframe_spacing: float = 1.5  # metres: a record with no key pose in sight this close becomes one
+    keyframe_min_spacing: float = 0.5  # metres: the novelty rule never adds a key pose closer than this
+    novelty_threshold: float = 0.5  # share of never-seen objects in view that makes a record novel
+    observation_window: int = 0  # records either side merged into a node's observation
+    max_objects_per_node: int = 16  # padded width of the node -> observed objects arrays
+    # captions (memory/captioner.py); room types are never handed to the captioner
+    captioner: str = "template"  # template | llm (uses the llm section)
+    caption_detect_near: float = 0.97
+    caption_detect_falloff: float = 4.0  # metres
+    caption_confusion: float = 0.03
+    caption_synonym: float = 0.35
+    caption_attribute_keep: float = 0.6
+    caption_sensor_text: float = 0.7
+    caption_max_objects: int = 8
+    # text encoder (memory/encoder.py)
+    embedder: str = "minilm"  # minilm | hashing
+    hashing_dim: int = 384
+    embed_batch: int = 32
+    token_buckets: tuple[int, ...] = (16, 32, 64, 128, 256)
+    # topological map (memory/topomap.py)
+    delta_spatial: float = 2.0  # metres: edge when D_ij < delta_spatial ...
+    edge_clearance: float = 0.05  # ... and the straight segment clears walls and objects by this much
+    node_pad_multiple: int = 16  # padded node counts are multiples of this (fewer recompiles)
+    # semantic forest (memory/forest.py)
+    omega: float = 0.5  # S_ij = omega * Phi_spatial + (1 - omega) * Psi_semantic
+    alpha: float = 0.5  # F_i = alpha * Norm(f_spa) + (1 - alpha) * Norm(f_sem)
+    spatial_scale: float = 3.0  # metres: Phi_spatial = exp(-d_ij / spatial_scale)
+    spatial_distance: str = "geodesic"  # geodesic (shortest path over G_t) | euclidean
+    forest_metric: str = "hybrid"  # hybrid: 1 - S_ij | fused: Euclidean distance of fused features F_i
+    linkage: str = "average"  # average | single | complete | weighted | ward
+    level_sizes: tuple[float, ...] = (5.0, 16.0)  # mean leaves per cluster of each level above the leaves
+    summariser: str = "template"  # template | llm
+
+    def __post_init__(self):
+        _check(self.keyframe_rule in ("spacing", "novelty", "both"), "memory.keyframe_rule",
+               "must be spacing, novelty or both")
+        _check(self.keyframe_spacing > 0, "memory.keyframe_spacing", "must be > 0")
+        _check(0 <= self.keyframe_min_spacing, "memory.keyframe_min_spacing", "must be >= 0")
+        _check(0.0 < self.novelty_threshold <= 1.0, "memory.novelty_threshold", "must be in (0, 1]")
+        _check(self.observation_window >= 0, "memory.observation_window", "must be >= 0")
+        _check(self.max_objects_per_node >= 1, "memory.max_objects_per_node", "must be >= 1")
+        _check(self.captioner in ("template", "llm"), "memory.captioner", "must be template or llm")
+        for k in ("caption_detect_near", "caption_confusion", "caption_synonym", "caption_attribute_keep",
+                  "caption_sensor_text"):
+            _check(0.0 <= getattr(self, k) <= 1.0, f"memory.{k}", "must be in [0, 1]")
+        _check(self.caption_detect_falloff > 0, "memory.caption_detect_falloff", "must be > 0")
+        _check(self.caption_max_objects >= 1, "memory.caption_max_objects", "must be >= 1")
+        _check(self.embedder in ("minilm", "hashing"), "memory.embedder", "must be minilm or hashing")
+        _check(self.hashing_dim >= 8, "memory.hashing_dim", "must be >= 8")
+        _check(self.embed_batch >= 8, "memory.embed_batch", "must be >= 8")
+        _check(len(self.token_buckets) >= 1 and all(b >= 4 for b in self.token_buckets), "memory.token_buckets",
+               "must list token lengths >= 4")
+        _check(self.delta_spatial > 0, "memory.delta_spatial", "must be > 0")
+        _check(self.edge_clearance >= 0, "memory.edge_clearance", "must be >= 0")
+        _check(self.node_pad_multiple >= 1, "memory.node_pad_multiple", "must be >= 1")
+        _check(0.0 <= self.omega <= 1.0, "memory.omega", "must be in [0, 1]")
+        _check(0.0 <= self.alpha <= 1.0, "memory.alpha", "must be in [0, 1]")
+        _check(self.spatial_scale > 0, "memory.spatial_scale", "must be > 0")
+        _check(self.spatial_distance in ("geodesic", "euclidean"), "memory.spatial_distance",
+               "must be geodesic or euclidean")
+        _check(self.forest_metric in ("hybrid", "fused"), "memory.forest_metric", "must be hybrid or fused")
+        _check(self.linkage in ("average", "single", "complete", "weighted", "ward"), "memory.linkage",
+               "must be average, single, complete, weighted or ward")
+        _check(len(self.level_sizes) >= 2 and all(s >= 1.0 for s in self.level_sizes)
+               and list(self.level_sizes) == sorted(self.level_sizes), "memory.level_sizes",
+               "needs at least two increasing sizes >= 1 (leaf - subtree - forest: three levels or more)")
+        _check(self.summariser in ("template", "llm"), "memory.summariser", "must be template or llm")
+
+
+@dataclasses.dataclass(frozen=True)
 class PlanningConfig:
     """Order planning (paper's Pi* objective), paths and guide (ragnav_jax/planning)."""
 
@@ -181,8 +310,10 @@ class Config:
     seed: int = 0
     world: WorldConfig = dataclasses.field(default_factory=WorldConfig)
     run: RunConfig = dataclasses.field(default_factory=RunConfig)
-    planning: PlanningConfig = dataclasses.field(default_factory=PlanningConfig)
     memory: MemoryConfig = dataclasses.field(default_factory=MemoryConfig)
+    llm: LLMConfig = dataclasses.field(default_factory=LLMConfig)
+    episodes: EpisodesConfig = dataclasses.field(default_factory=EpisodesConfig)
+    planning: PlanningConfig = dataclasses.field(default_factory=PlanningConfig)
 
 
 # ----------------------------------------------------------------------------------------------------
