@@ -69,7 +69,7 @@ def cmd_episodes(args, cfg) -> int:
     save_episodes([p.episode for p in pairs], out)
     truth_path = save_truth(pairs, out.with_name(out.stem + ".chains.jsonl"))
     rows = episode_summary(pairs)
-    write_table(rows, out.with_name(out.stem + ".summary"))
+    write_table(rows, out.with_name(out.stem + "_summary"))
     report = parse_agreement(pairs)
     report_path = out.with_name(out.stem + ".agreement.json")
     report_path.write_text(json.dumps(report, indent=1) + "\n")

@@ -644,7 +644,8 @@ def render_goal(rng, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = 
 
 
 VERBS = ("go to", "visit", "find", "check", "head over to", "walk to", "take me to", "navigate to", "head to",
-         "make your way to", "go over to", "locate", "stop by", "inspect", "check on", "drive to")
+         "make your way to", "go over to", "locate", "stop by", "inspect", "check on", "drive to", "get to",
+         "approach", "swing by", "pay a visit to", "go and see", "bring me to")
 POLITE = ("", "", "", "please ", "could you ", "i need you to ", "can you ", "i'd like you to ")
 
 
@@ -672,8 +673,14 @@ def render_instruction(rng, res: list[str], order: str) -> str:
         last_sep = _pick(rng, (" and ", ", and "))
         lst = ", ".join(res[:-1]) + last_sep + _clean(res[-1])
         lst = lst.replace(",,", ",")
-        k = int(rng.integers(7))
-        if k == 0:
+        k = int(rng.integers(10))
+        if k == 7:
+            s = f"{p}{v()} {lst}, whichever order is quickest"
+        elif k == 8:
+            s = f"{p}{v()} {lst}. I don't care about the order"
+        elif k == 9:
+            s = f"{p}{v()} {lst}, the order is up to you"
+        elif k == 0:
             s = f"{p}{v()} {lst} in any order"
         elif k == 1:
             s = f"in any order, {v()} {lst}"
@@ -688,7 +695,16 @@ def render_instruction(rng, res: list[str], order: str) -> str:
         else:
             s = f"{p}{v()} {lst} in no particular order"
         return _sentence(s)
-    k = int(rng.integers(7))
+    k = int(rng.integers(10))
+    if k == 7:  # "X first, then Y"
+        return _sentence(f"{p}{v()} {_clean(res[0])} first" + "".join(f", then {r}" for r in res[1:]))
+    if k == 8:  # "Begin with X, then Y, and end at Z"
+        mid = "".join(f", then {r}" for r in res[1:-1])
+        return _sentence(f"begin with {res[0]}{mid}, and end at {res[-1]}")
+    if k == 9:  # "After X, go to Y."
+        parts = [_sentence(f"after {_pick(rng, ('visiting', 'checking', 'going to'))} {_clean(res[0])}, {v()} {_clean(res[1])}")]
+        parts += [_sentence(f"{_pick(rng, ('then', 'after that', 'next'))} {v()} {_clean(r)}") for r in res[2:]]
+        return " ".join(parts)
     then = lambda r: _pick(rng, (f"then {r}", f"then {v()} {r}", f"then {r}"))  # noqa: E731
     if k == 0:
         s = f"{p}{v()} {res[0]}" + "".join(f", {then(r)}" for r in res[1:])

@@ -145,6 +145,8 @@ _FREE = re.compile(
     r"|\b(?:the\s+)?(?:visiting\s+)?order\s+is\s+up\s+to\s+you|\bin\s+any\s+sequence"
     r"|\b(?:taking|via|using|along|by)\s+the\s+(?:shortest|quickest|fastest)\s+(?:route|path|way)"
     r"|\bas\s+(?:efficiently|quickly)\s+as\s+possible"
+    r"|\b(?:i\s+)?(?:do\s+not|don't)\s+care\s+(?:about|for)\s+the\s+order"
+    r"|\bwhichever\s+order\s+(?:you\s+(?:like|want|prefer)|is\s+(?:quickest|fastest|shortest|best|easiest))"
 )
 
 _CONNECTORS = (
@@ -168,6 +170,10 @@ _VERBS = _phrase_tuples(L.VERBS)
 _TRAILS = _phrase_tuples(L.TRAILING_FILLERS)
 _RELS = sorted(((tuple(k.split()), v) for k, v in L.RELATION_PHRASES.items()), key=lambda kv: -len(kv[0]))
 _ROOM_PREPS = frozenset({"in", "inside", "within", "into", "inside of"})
+_DANGLING = frozenset(
+    "that which who is are that's which's whose where reads shows measures measuring reading showing currently "
+    "located placed situated".split()
+)
 
 # ----------------------------------------------------------------------------------------------------
 # Numbers
@@ -486,6 +492,9 @@ def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
             break
         words.append(tokens[i])
         i += 1
+    # Relative-clause words left before a cut-out sensor phrase: "the fridge that is (colder than 5 C)".
+    while len(words) > 1 and words[-1] in _DANGLING:
+        words.pop()
     return words, i
 
 
