@@ -22,7 +22,7 @@ from ragnav_jax.language.episodes import (
 )
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.world.generator import generate_scene
-from ragnav_jax.world.scene import example_scene_path, save_scene
+from ragnav_jax.world.scene import example_scene_path
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 

@@ -4,10 +4,10 @@ ParseError cases, and a fuzz test showing that nothing but ParseError ever escap
 import json
 
 import pytest
+from conftest import SHARED
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import SHARED
 from ragnav_jax.errors import UserError
 from ragnav_jax.language.agreement import chain_differences
 from ragnav_jax.language.parser import parse_instruction, split_noun_phrase, words_to_number
@@ -112,6 +112,8 @@ HAND = [
            S(T("exit door")))),
     ("I'd like you to swing by the greenhouse heater at position (12.0, 3.5) with humidity of 70 percent or more.",
      chain("strict", S(T("greenhouse heater"), loc=(12.0, 3.5), sensors=[("humidity_pct", "ge", 70.0, "%")]))),
+    ("find the exercise mat (1, 9.6) and the yoga mat around x=0.9, y=10, then the cat at (2,3)",
+     chain("strict", S(T("exercise mat"), loc=(1.0, 9.6)), S(T("yoga mat"), loc=(0.9, 10.0)), S(T("cat"), loc=(2.0, 3.0)))),
     ("Go to the orchid in the bathroom, the fern in the hallway, and the cactus in the conservatory, in no particular order.",
      chain("free", S(T("orchid"), room="bathroom"), S(T("fern"), room="hallway"), S(T("cactus"), room="conservatory"))),
 ]

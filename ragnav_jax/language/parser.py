@@ -82,10 +82,10 @@ _NW_AFTER_CMP = re.compile(rf"(?P<pre>{CMP_ALT}\s+|{READ_ALT}\s+(?:of|is|at)\s+)
 _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|°|percent\b|per\s+cent\b|%))")
 
 _LOC_LEAD = (
-    r"(?:(?:(?:which|that)\s+is\s+|located\s+|positioned\s+|situated\s+|placed\s+)?"
-    r"(?:at|near|around|by|close\s+to|next\s+to)\s+)?"
-    r"(?:(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:the\s+)?"
-    r"(?:(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:of\s+)?"
+    r"(?:(?:\b(?:which|that)\s+is\s+|\blocated\s+|\bpositioned\s+|\bsituated\s+|\bplaced\s+)?"
+    r"\b(?:at|near|around|by|close\s+to|next\s+to)\s+)?"
+    r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
+    r"(?:\b(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:\bof\s+)?"
 )
 _PAIR_PAREN = rf"[(\[]\s*(?:x\s*[=:]?\s*)?(?P<x1>{NUM})\s*[,;]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM})\s*[)\]]"
 _PAIR_XY = rf"\bx\s*(?:=|:|is)?\s*(?P<x2>{NUM})\s*(?:,|;|and)?\s*y\s*(?:=|:|is)?\s*(?P<y2>{NUM}){_NUM_END}"
