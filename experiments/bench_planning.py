@@ -84,7 +84,9 @@ def time_jax(method: str, problems, lams, repeats: int, **kw) -> tuple[dict, obj
         per = order_mod._episode_bytes(method, G, K) * lams.shape[0]
         batch = int(max(1, min(E, (1 << 28) // per)))
     t = time.perf_counter()
-    compiled = order_mod._solve.lower(problems, lams, method=method, batch_size=batch, max_iters=kw.get("max_iters", 100)).compile()
+    compiled = order_mod._solve.lower(
+        problems, lams, method=method, batch_size=batch, max_iters=kw.get("max_iters", 100)
+    ).compile()
     compile_s = time.perf_counter() - t
     out = jax.block_until_ready(compiled(problems, lams))  # warm-up
     runs = []
@@ -92,7 +94,12 @@ def time_jax(method: str, problems, lams, repeats: int, **kw) -> tuple[dict, obj
         t = time.perf_counter()
         out = jax.block_until_ready(compiled(problems, lams))
         runs.append(time.perf_counter() - t)
-    return {"compile_s": compile_s, "run_s_median": statistics.median(runs), "run_s_all": runs, "batch_size": batch}, out
+    return {
+        "compile_s": compile_s,
+        "run_s_median": statistics.median(runs),
+        "run_s_all": runs,
+        "batch_size": batch,
+    }, out
 
 
 def time_python(fn, dist: np.ndarray, lam: float, sample: int, episodes: int) -> tuple[dict, list[float]]:
@@ -118,15 +125,24 @@ def bench_case(name, method, n, fn, args, rng) -> tuple[dict, object, np.ndarray
     got = np.asarray(out.objective[0, : len(values)])
     agree = bool(np.allclose(got, np.array(values), rtol=1e-4, atol=1e-3))
     row = {
-        "case": name, "method": method, "goals": n, "episodes": args.episodes, "lambda": args.lam, **jx, **py,
+        "case": name,
+        "method": method,
+        "goals": n,
+        "episodes": args.episodes,
+        "lambda": args.lam,
+        **jx,
+        **py,
         "jax_episodes_per_s": args.episodes / jx["run_s_median"],
         "speedup_vs_python": py["python_s_all_episodes"] / jx["run_s_median"],
         "speedup_vs_python_incl_compile": py["python_s_all_episodes"] / (jx["run_s_median"] + jx["compile_s"]),
         "agrees_with_python": agree,
     }
-    print(f"{name}: jax {jx['run_s_median']:.2f} s (compile {jx['compile_s']:.1f} s), python "
-          f"{py['python_s_all_episodes']:.0f} s{' (extrapolated)' if py['python_extrapolated'] else ''}, "
-          f"x{row['speedup_vs_python']:.0f}, agree={agree}", flush=True)
+    print(
+        f"{name}: jax {jx['run_s_median']:.2f} s (compile {jx['compile_s']:.1f} s), python "
+        f"{py['python_s_all_episodes']:.0f} s{' (extrapolated)' if py['python_extrapolated'] else ''}, "
+        f"x{row['speedup_vs_python']:.0f}, agree={agree}",
+        flush=True,
+    )
     return row, out, dist
 
 
@@ -139,14 +155,22 @@ def gap_case(n: int, episodes: int, lam: float, rng, repeats: int) -> dict:
     best, heur = np.asarray(exact.objective[0], np.float64), np.asarray(ls.objective[0], np.float64)
     gap = (heur - best) / np.maximum(best, 1e-9)
     row = {
-        "goals": n, "episodes": episodes, "lambda": lam,
-        "gap_mean_pct": 100 * float(gap.mean()), "gap_p95_pct": 100 * float(np.percentile(gap, 95)),
-        "gap_max_pct": 100 * float(gap.max()), "optimal_fraction": float(np.mean(gap <= 1e-6)),
+        "goals": n,
+        "episodes": episodes,
+        "lambda": lam,
+        "gap_mean_pct": 100 * float(gap.mean()),
+        "gap_p95_pct": 100 * float(np.percentile(gap, 95)),
+        "gap_max_pct": 100 * float(gap.max()),
+        "optimal_fraction": float(np.mean(gap <= 1e-6)),
         "never_better_than_exact": bool(np.all(gap >= -1e-5)),
-        "local_search_run_s": t_ls["run_s_median"], "held_karp_run_s": t_hk["run_s_median"],
+        "local_search_run_s": t_ls["run_s_median"],
+        "held_karp_run_s": t_hk["run_s_median"],
     }
-    print(f"local search n={n} lambda={lam}: mean gap {row['gap_mean_pct']:.3f}%, max {row['gap_max_pct']:.2f}%, "
-          f"optimal {100 * row['optimal_fraction']:.1f}%", flush=True)
+    print(
+        f"local search n={n} lambda={lam}: mean gap {row['gap_mean_pct']:.3f}%, max {row['gap_max_pct']:.2f}%, "
+        f"optimal {100 * row['optimal_fraction']:.1f}%",
+        flush=True,
+    )
     return row
 
 

@@ -52,8 +52,16 @@ def test_guide_json_and_text_with_unreachable_goal(tmp_path, apartment):
     result = jax.jit(held_karp)(p, jnp.float32(100.0))  # strict enough: mug, then bed
     why = [{"score": 0.91, "matched": "mug on the kitchen counter"}, {"score": 0.7}, {"score": 0.4}]
     guide = build_guide(
-        result, start=0, positions=POS, pred=pred, weights=w, goal_names=names, explanations=why,
-        node_rooms=ROOMS, node_objects=OBJECTS, start_heading=0.0,
+        result,
+        start=0,
+        positions=POS,
+        pred=pred,
+        weights=w,
+        goal_names=names,
+        explanations=why,
+        node_rooms=ROOMS,
+        node_objects=OBJECTS,
+        start_heading=0.0,
     )
     json.loads(json.dumps(guide))  # JSON-ready, no inf / numpy scalars
     assert guide["status"] == "some_unreachable"

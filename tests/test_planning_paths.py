@@ -53,7 +53,9 @@ def test_paths_match_networkx(seed):
         if s in g and d in g and nx.has_path(g, s, d):
             ref = nx.shortest_path(g, s, d, weight="weight")
             assert bool(paths.found[k]) and nodes == ref == host
-            assert float(lengths[k]) == pytest.approx(nx.shortest_path_length(g, s, d, weight="weight"), rel=1e-5, abs=1e-5)
+            assert float(lengths[k]) == pytest.approx(
+                nx.shortest_path_length(g, s, d, weight="weight"), rel=1e-5, abs=1e-5
+            )
             assert float(lengths[k]) == pytest.approx(float(dist[s, d]), rel=1e-5, abs=1e-5)
         elif s == d:  # a padded node is its own (empty) path
             assert nodes == [s] and host == [s]

@@ -68,3 +68,16 @@ def reachable_candidates(problem: OrderProblem) -> tuple[Array, Array]:
     """Candidates reachable from the start (G, K) bool, and goals with any such candidate (G,) bool."""
     cand_ok = problem.cand_mask & jnp.isfinite(problem.start_cost)
     return cand_ok, problem.mask & jnp.any(cand_ok, axis=1)
+
+
+def candidate_unary(scores: Array, weight: Array, cand_mask: Array | None = None) -> Array:
+    """(G, K) unary costs for a joint candidate choice: weight * (best score of the goal - candidate score).
+
+    scores: (G, K) retrieval scores of each goal's top-k candidates; weight: metres per unit of score
+    (PlanningConfig.candidate_weight). The top candidate costs nothing, so weight = 0 picks candidates
+    by travel alone and a large weight keeps the top-1 retrieval.
+    """
+    scores = jnp.asarray(scores, jnp.float32)
+    ok = jnp.ones(scores.shape, bool) if cand_mask is None else jnp.asarray(cand_mask, bool)
+    best = jnp.max(jnp.where(ok, scores, -jnp.inf), axis=1, keepdims=True)
+    return jnp.where(ok, weight * (best - scores), 0.0)

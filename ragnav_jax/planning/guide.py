@@ -146,7 +146,9 @@ def build_guide(
             targets.append(entry)
             continue
         arr = np.array(nodes, np.int32)
-        lengths, rule2 = (np.asarray(x) for x in edge_lengths(arr, np.ones(len(arr), bool), positions, weights, has_distance))
+        lengths, rule2 = (
+            np.asarray(x) for x in edge_lengths(arr, np.ones(len(arr), bool), positions, weights, has_distance)
+        )
         dist = float(lengths.sum())
         total += dist
         rules.update(["rule2" if f else "rule1" for f in rule2.tolist()])
@@ -163,8 +165,12 @@ def build_guide(
         targets.append(entry)
 
     unreachable = [
-        {"goal": g, "name": goal_names[g] if g < len(goal_names) else f"goal {g}", "instruction_rank": rank[g],
-         "reason": "no path from the start in the map"}
+        {
+            "goal": g,
+            "name": goal_names[g] if g < len(goal_names) else f"goal {g}",
+            "instruction_rank": rank[g],
+            "reason": "no path from the start in the map",
+        }
         for g in range(G)
         if g < len(goal_names) and not bool(r.reachable[g]) and goal_names[g]
     ]
@@ -187,17 +193,25 @@ def build_guide(
 
 _CUE_TEXT = {
     "enter": lambda c: f"enter the {c['room']}",
-    "turn": lambda c: "turn around" if c["direction"] == "around" else f"turn {c['direction']} ({abs(c['angle_deg']):.0f} deg)",
+    "turn": lambda c: (
+        "turn around" if c["direction"] == "around" else f"turn {c['direction']} ({abs(c['angle_deg']):.0f} deg)"
+    ),
     "pass": lambda c: "pass " + ", ".join(c["landmarks"]),
-    "arrive": lambda c: "arrive" + (f" in the {c['room']}" if "room" in c else "")
-    + (f" by {', '.join(c['landmarks'])}" if c.get("landmarks") else ""),
+    "arrive": lambda c: (
+        "arrive"
+        + (f" in the {c['room']}" if "room" in c else "")
+        + (f" by {', '.join(c['landmarks'])}" if c.get("landmarks") else "")
+    ),
 }
 
 
 def guide_text(guide: dict) -> str:
     """A readable rendering of a guide dict."""
-    rule = {"rule1": "edge distances, Rule 1", "rule2": "straight lines between nodes, Rule 2",
-            "mixed": "Rule 1 with Rule 2 where edges lack a distance"}[guide["distance_rule"]]
+    rule = {
+        "rule1": "edge distances, Rule 1",
+        "rule2": "straight lines between nodes, Rule 2",
+        "mixed": "Rule 1 with Rule 2 where edges lack a distance",
+    }[guide["distance_rule"]]
     names = [t["name"] for t in guide["targets"]]
     kept = "instruction order kept" if guide["instruction_order_kept"] else f"{guide['inversions']} pair(s) reordered"
     dist = guide["distance_m"]
@@ -219,7 +233,9 @@ def guide_text(guide: dict) -> str:
             continue
         cues = "; ".join(_CUE_TEXT[c["type"]](c) for c in leg["cues"])
         d = leg["distance_m"]
-        lines.append(f"   route: {d:.2f} m, {len(leg['nodes'])} nodes: {cues}" if d is not None else f"   route: {cues}")
+        lines.append(
+            f"   route: {d:.2f} m, {len(leg['nodes'])} nodes: {cues}" if d is not None else f"   route: {cues}"
+        )
     for u in guide["unreachable"]:
         lines.append(f"unreachable: {u['name']} (instruction #{u['instruction_rank'] + 1}): {u['reason']}")
     return "\n".join(lines)
@@ -241,9 +257,18 @@ def draw_route(ax, guide: dict, color_map: str = "viridis"):
             ax.plot(pts[:, 0], pts[:, 1], ".", color=c, ms=4, zorder=4)
         p = t["marker"]["position"]
         ax.plot(p[0], p[1], marker="o", ms=13, color=c, mec="black", zorder=6)
-        ax.text(p[0], p[1], str(t["step"]), ha="center", va="center", fontsize=7, color="white", weight="bold", zorder=7)
-        ax.annotate(t["name"], (p[0], p[1]), xytext=(6, 6), textcoords="offset points", fontsize=7, zorder=7,
-                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec=c, alpha=0.85))
+        ax.text(
+            p[0], p[1], str(t["step"]), ha="center", va="center", fontsize=7, color="white", weight="bold", zorder=7
+        )
+        ax.annotate(
+            t["name"],
+            (p[0], p[1]),
+            xytext=(6, 6),
+            textcoords="offset points",
+            fontsize=7,
+            zorder=7,
+            bbox=dict(boxstyle="round,pad=0.15", fc="white", ec=c, alpha=0.85),
+        )
     return ax
 
 

@@ -129,7 +129,7 @@ def _single_candidate(problem: OrderProblem, solver: str) -> None:
 # Brute force
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _perm_tables(G: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """All permutations of G goals (P, G) and their matmul features.
 
@@ -169,7 +169,9 @@ def brute_force(problem: OrderProblem, lam: Array) -> OrderResult:
     after = precedence(problem.rank, active)
     perms, travel_feat, before_feat = (jnp.asarray(t) for t in _perm_tables(G))
     # The barrier keeps XLA from fusing these small producers into the big matmuls (measured slower).
-    vec, pairs = jax.lax.optimization_barrier((jnp.concatenate([cost.ravel(), start]), after.ravel().astype(jnp.float32)))
+    vec, pairs = jax.lax.optimization_barrier(
+        (jnp.concatenate([cost.ravel(), start]), after.ravel().astype(jnp.float32))
+    )
     travel = jnp.dot(travel_feat, vec, precision=_HIGHEST)
     inv = jnp.dot(before_feat, pairs, precision=_HIGHEST)
     best = jnp.argmin(travel + penalty(inv, lam))
@@ -180,7 +182,7 @@ def brute_force(problem: OrderProblem, lam: Array) -> OrderResult:
 # Held-Karp
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _subset_layers(G: int) -> tuple[np.ndarray, ...]:
     """Subsets of G goals as bitmasks, grouped by size: layers[k] (C(G, k),) int32."""
     masks = np.arange(1 << G, dtype=np.int64)
@@ -256,7 +258,7 @@ def held_karp(problem: OrderProblem, lam: Array) -> OrderResult:
 # Local search
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _move_tables(G: int, max_segment: int = 3) -> tuple[np.ndarray, np.ndarray]:
     """Neighbourhood of an order as position permutations: new = order[sigma].
 
