@@ -70,81 +70,6 @@ class WorldConfig:
 
 
 @dataclasses.dataclass(frozen=True)
-class MemoryConfig:
-    """Dual-basis memory (ragnav build-memory): key poses, captions, encoder, map edges, semantic forest."""
-
-    # key poses (memory/keyposes.py)
-    keyframe_rule: str = "both"  # spacing | novelty | both
-    keyframe_spacing: float = 1.5  # metres: a record with no key pose in sight this close becomes one
-    keyframe_min_spacing: float = 0.5  # metres: the novelty rule never adds a key pose closer than this
-    novelty_threshold: float = 0.5  # share of never-seen objects in view that makes a record novel
-    observation_window: int = 0  # records either side merged into a node's observation
-    max_objects_per_node: int = 16  # padded width of the node -> observed objects arrays
-    # captions (memory/captioner.py); room types are never handed to the captioner
-    captioner: str = "template"  # template | llm (uses the llm section)
-    caption_detect_near: float = 0.97
-    caption_detect_falloff: float = 4.0  # metres
-    caption_confusion: float = 0.03
-    caption_synonym: float = 0.35
-    caption_attribute_keep: float = 0.6
-    caption_sensor_text: float = 0.7
-    caption_max_objects: int = 8
-    # text encoder (memory/encoder.py)
-    embedder: str = "minilm"  # minilm | hashing
-    hashing_dim: int = 384
-    embed_batch: int = 32
-    token_buckets: tuple[int, ...] = (16, 32, 64, 128, 256)
-    # topological map (memory/topomap.py)
-    delta_spatial: float = 2.0  # metres: edge when D_ij < delta_spatial ...
-    edge_clearance: float = 0.05  # ... and the straight segment clears walls and objects by this much
-    node_pad_multiple: int = 16  # padded node counts are multiples of this (fewer recompiles)
-    # semantic forest (memory/forest.py)
-    omega: float = 0.5  # S_ij = omega * Phi_spatial + (1 - omega) * Psi_semantic
-    alpha: float = 0.5  # F_i = alpha * Norm(f_spa) + (1 - alpha) * Norm(f_sem)
-    spatial_scale: float = 3.0  # metres: Phi_spatial = exp(-d_ij / spatial_scale)
-    spatial_distance: str = "geodesic"  # geodesic (shortest path over G_t) | euclidean
-    forest_metric: str = "hybrid"  # hybrid: 1 - S_ij | fused: Euclidean distance of fused features F_i
-    linkage: str = "average"  # average | single | complete | weighted | ward
-    level_sizes: tuple[float, ...] = (5.0, 16.0)  # mean leaves per cluster of each level above the leaves
-    summariser: str = "template"  # template | llm
-
-    def __post_init__(self):
-        _check(self.keyframe_rule in ("spacing", "novelty", "both"), "memory.keyframe_rule",
-               "must be spacing, novelty or both")
-        _check(self.keyframe_spacing > 0, "memory.keyframe_spacing", "must be > 0")
-        _check(0 <= self.keyframe_min_spacing, "memory.keyframe_min_spacing", "must be >= 0")
-        _check(0.0 < self.novelty_threshold <= 1.0, "memory.novelty_threshold", "must be in (0, 1]")
-        _check(self.observation_window >= 0, "memory.observation_window", "must be >= 0")
-        _check(self.max_objects_per_node >= 1, "memory.max_objects_per_node", "must be >= 1")
-        _check(self.captioner in ("template", "llm"), "memory.captioner", "must be template or llm")
-        for k in ("caption_detect_near", "caption_confusion", "caption_synonym", "caption_attribute_keep",
-                  "caption_sensor_text"):
-            _check(0.0 <= getattr(self, k) <= 1.0, f"memory.{k}", "must be in [0, 1]")
-        _check(self.caption_detect_falloff > 0, "memory.caption_detect_falloff", "must be > 0")
-        _check(self.caption_max_objects >= 1, "memory.caption_max_objects", "must be >= 1")
-        _check(self.embedder in ("minilm", "hashing"), "memory.embedder", "must be minilm or hashing")
-        _check(self.hashing_dim >= 8, "memory.hashing_dim", "must be >= 8")
-        _check(self.embed_batch >= 8, "memory.embed_batch", "must be >= 8")
-        _check(len(self.token_buckets) >= 1 and all(b >= 4 for b in self.token_buckets), "memory.token_buckets",
-               "must list token lengths >= 4")
-        _check(self.delta_spatial > 0, "memory.delta_spatial", "must be > 0")
-        _check(self.edge_clearance >= 0, "memory.edge_clearance", "must be >= 0")
-        _check(self.node_pad_multiple >= 1, "memory.node_pad_multiple", "must be >= 1")
-        _check(0.0 <= self.omega <= 1.0, "memory.omega", "must be in [0, 1]")
-        _check(0.0 <= self.alpha <= 1.0, "memory.alpha", "must be in [0, 1]")
-        _check(self.spatial_scale > 0, "memory.spatial_scale", "must be > 0")
-        _check(self.spatial_distance in ("geodesic", "euclidean"), "memory.spatial_distance",
-               "must be geodesic or euclidean")
-        _check(self.forest_metric in ("hybrid", "fused"), "memory.forest_metric", "must be hybrid or fused")
-        _check(self.linkage in ("average", "single", "complete", "weighted", "ward"), "memory.linkage",
-               "must be average, single, complete, weighted or ward")
-        _check(len(self.level_sizes) >= 2 and all(s >= 1.0 for s in self.level_sizes)
-               and list(self.level_sizes) == sorted(self.level_sizes), "memory.level_sizes",
-               "needs at least two increasing sizes >= 1 (leaf - subtree - forest: three levels or more)")
-        _check(self.summariser in ("template", "llm"), "memory.summariser", "must be template or llm")
-
-
-@dataclasses.dataclass(frozen=True)
 class LLMConfig:
     """Optional OpenAI-compatible chat endpoint, shared by the instruction parser and the captioner.
 
@@ -274,6 +199,80 @@ class MemoryConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class SimConfig:
+    """MJX simulation (ragnav explore): the planar robot, its sensors and the physics/control rates."""
+
+    timestep: float = 0.025  # seconds per physics step
+    substeps: int = 4  # physics steps per control step (control at 1 / (timestep * substeps) Hz)
+    robot_radius: float = 0.15  # metres, collision sphere
+    robot_height: float = 0.2  # metres, sphere centre above the floor (flat things below it never touch)
+    max_speed: float = 0.8  # m/s
+    max_yaw_rate: float = 2.5  # rad/s
+    lidar_rays: int = 144  # evenly spread over lidar_fov_deg
+    lidar_fov_deg: float = 360.0
+    lidar_range: float = 6.0  # metres; a ray hitting nothing reports this
+    lidar_height: float = 0.25  # metres above the floor
+    camera_fov_deg: float = 90.0  # horizontal field of view of the forward camera
+    camera_range: float = 4.0  # metres, planar distance to an object's centre
+    camera_height: float = 0.8  # metres
+    odom_noise: tuple[float, float] = (0.0, 0.0)  # std of recorded pose noise: (x/y metres, yaw radians)
+    max_contact_pairs: int = 16  # robot-vs-box pairs collided per physics step (nearest by bounding sphere)
+
+    def __post_init__(self):
+        _check(0 < self.timestep <= 0.05, "sim.timestep", "must be in (0, 0.05] seconds")
+        _check(1 <= self.substeps <= 50, "sim.substeps", "must be in [1, 50]")
+        _check(0.05 <= self.robot_radius <= 0.5, "sim.robot_radius", "must be in [0.05, 0.5] metres")
+        _check(self.robot_height >= self.robot_radius, "sim.robot_height", "must be >= sim.robot_radius")
+        _check(self.max_speed > 0 and self.max_yaw_rate > 0, "sim.max_speed", "speeds must be > 0")
+        _check(1 <= self.lidar_rays <= 2048, "sim.lidar_rays", "must be in [1, 2048]")
+        _check(0 < self.lidar_fov_deg <= 360, "sim.lidar_fov_deg", "must be in (0, 360]")
+        _check(self.lidar_range > 0 and self.camera_range > 0, "sim.lidar_range", "ranges must be > 0")
+        _check(0 < self.camera_fov_deg < 360, "sim.camera_fov_deg", "must be in (0, 360)")
+        _check(min(self.odom_noise) >= 0, "sim.odom_noise", "standard deviations must be >= 0")
+        _check(self.max_contact_pairs >= 1, "sim.max_contact_pairs", "must be >= 1")
+
+
+@dataclasses.dataclass(frozen=True)
+class ExploreConfig:
+    """Frontier exploration (ragnav explore): grids, frontier rules, controller and step budget."""
+
+    grid_resolution: float = 1.0  # metres, the paper's exploration grid (frontier regions are clustered on it)
+    map_resolution: float = 0.2  # metres, the occupancy raster beneath it (free / occupied / unknown, paths)
+    min_frontier_cells: int = 3  # frontier regions with fewer map cells are dropped as noise
+    target_rule: str = "path"  # "euclidean" (the paper: nearest frontier point) or "path" (shortest path)
+    clearance: float = 0.15  # metres kept between the robot's sphere and mapped obstacles when planning
+    lookahead: float = 0.4  # metres, pure-pursuit lookahead of the waypoint controller
+    arrive_tol: float = 0.25  # metres from a frontier target that count as arrived
+    goal_timeout: int = 100  # control steps allowed beyond 3x the nominal drive time before a target is given up
+    stall_steps: int = 30  # control steps without progress (< 2 mm each) before a target is given up
+    look_sweep_deg: float = 60.0  # camera heading sweeps this far either side of the motion (0: look ahead)
+    look_period: float = 4.0  # seconds per sweep cycle
+    max_steps: int = 3000  # control steps per scene (the step budget)
+    scan_every: int = 1  # control steps between lidar/camera records (and map updates)
+    batch_size: int = 8  # scenes explored together in one vmapped call
+
+    def __post_init__(self):
+        _check(self.map_resolution > 0, "explore.map_resolution", "must be > 0")
+        ratio = self.grid_resolution / self.map_resolution if self.map_resolution > 0 else 0
+        _check(
+            ratio >= 1 and abs(ratio - round(ratio)) < 1e-6,
+            "explore.grid_resolution",
+            "must be a whole multiple of explore.map_resolution",
+        )
+        _check(self.min_frontier_cells >= 1, "explore.min_frontier_cells", "must be >= 1")
+        _check(self.target_rule in ("euclidean", "path"), "explore.target_rule", "must be 'euclidean' or 'path'")
+        _check(self.clearance >= 0, "explore.clearance", "must be >= 0")
+        _check(self.lookahead > 0 and self.arrive_tol > 0, "explore.lookahead", "distances must be > 0")
+        _check(self.goal_timeout >= 1, "explore.goal_timeout", "must be >= 1")
+        _check(self.stall_steps >= 1, "explore.stall_steps", "must be >= 1")
+        _check(0 <= self.look_sweep_deg <= 180, "explore.look_sweep_deg", "must be in [0, 180]")
+        _check(self.look_period > 0, "explore.look_period", "must be > 0")
+        _check(self.max_steps >= 1, "explore.max_steps", "must be >= 1")
+        _check(self.scan_every >= 1, "explore.scan_every", "must be >= 1")
+        _check(self.batch_size >= 1, "explore.batch_size", "must be >= 1")
+
+
+@dataclasses.dataclass(frozen=True)
 class PlanningConfig:
     """Order planning (paper's Pi* objective), paths and guide (ragnav_jax/planning)."""
 
@@ -304,16 +303,45 @@ class RunConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class RetrievalConfig:
+    """Retrieval hyperparameters (see ragnav_jax/retrieval/params.py) and the method to run."""
+
+    method: str = "ragnav"  # ragnav | ragnav:no_forest | ragnav:no_topology | ragnav:no_spatial | ragnav:no_boost | naive_rag | graphrag | lightrag
+    sigma: float = 2.0  # metres, S_spatial Gaussian width
+    eta: float = 0.3  # neighbour boosting coefficient
+    top_k: int = 8  # anchor-guided recall size K (<= 16)
+    hops: int = 2  # anchor validation neighbourhood, hops (<= 3)
+    boost_hops: int = 1
+    beam: int = 3  # forest beam width per level (<= 8)
+    anchor_threshold: float = 0.45
+    boost_threshold: float = 0.45
+    w_slot: float = 0.7  # instance phrase vs node fingerprint
+    match_threshold: float = 0.6
+    sigma_loc: float = 1.5  # metres, location hint Gaussian width
+    w_loc: float = 1.0
+    w_sensor: float = 1.0
+
+    def __post_init__(self):
+        _check(self.sigma > 0 and self.sigma_loc > 0, "retrieval.sigma", "sigma and sigma_loc must be > 0")
+        _check(1 <= self.top_k <= 16, "retrieval.top_k", "must be in [1, 16]")
+        _check(0 <= self.hops <= 3 and 0 <= self.boost_hops <= 1, "retrieval.hops", "hops in [0, 3], boost_hops in [0, 1]")
+        _check(1 <= self.beam <= 8, "retrieval.beam", "must be in [1, 8]")
+
+
+@dataclasses.dataclass(frozen=True)
 class Config:
     """The whole resolved configuration of a run."""
 
     seed: int = 0
     world: WorldConfig = dataclasses.field(default_factory=WorldConfig)
     run: RunConfig = dataclasses.field(default_factory=RunConfig)
+    sim: SimConfig = dataclasses.field(default_factory=SimConfig)
+    explore: ExploreConfig = dataclasses.field(default_factory=ExploreConfig)
     memory: MemoryConfig = dataclasses.field(default_factory=MemoryConfig)
     llm: LLMConfig = dataclasses.field(default_factory=LLMConfig)
     episodes: EpisodesConfig = dataclasses.field(default_factory=EpisodesConfig)
     planning: PlanningConfig = dataclasses.field(default_factory=PlanningConfig)
+    retrieval: RetrievalConfig = dataclasses.field(default_factory=RetrievalConfig)
 
 
 # ----------------------------------------------------------------------------------------------------
