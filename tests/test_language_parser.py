@@ -114,6 +114,11 @@ HAND = [
      chain("strict", S(T("greenhouse heater"), loc=(12.0, 3.5), sensors=[("humidity_pct", "ge", 70.0, "%")]))),
     ("find the exercise mat (1, 9.6) and the yoga mat around x=0.9, y=10, then the cat at (2,3)",
      chain("strict", S(T("exercise mat"), loc=(1.0, 9.6)), S(T("yoga mat"), loc=(0.9, 10.0)), S(T("cat"), loc=(2.0, 3.0)))),
+    ("Go to the stove, which should be hotter than 100 degrees, then the desk, which has a lamp on it.",
+     chain("strict", S(T("stove"), sensors=[("temperature_c", "gt", 100.0, "c")]), S(T("desk", rels=[("with", T("lamp"))])))),
+    ("Go to the thermostat reading 21 degrees and the plant with NDVI between 0.5 and 0.3.",
+     chain("strict", S(T("thermostat"), sensors=[("temperature_c", "approx", 21.0, "c")]),
+           S(T("plant"), sensors=[("ndvi", "ge", 0.3, ""), ("ndvi", "le", 0.5, "")]))),
     ("Go to the orchid in the bathroom, the fern in the hallway, and the cactus in the conservatory, in no particular order.",
      chain("free", S(T("orchid"), room="bathroom"), S(T("fern"), room="hallway"), S(T("cactus"), room="conservatory"))),
 ]
@@ -159,6 +164,7 @@ def test_chain_round_trips_through_json():
         ("Go to the plant at x=abc", "could not read the coordinates"),
         ("Go to the kettle at 5O degrees", "could not read a sensor value"),
         ("Go to the lamp at 1.2.3", "could not read the number"),
+        ("Go to the plant with an NDVI of 0,6", "decimals with a point"),
         ("go to the sofa " * 400, "too long"),
         (None, "must be text"),
     ],
@@ -191,7 +197,7 @@ _WORDS = st.sampled_from(
 )
 
 
-@settings(max_examples=2500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=3000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.text(max_size=120))
 def test_fuzz_random_text_only_raises_parse_error(text):
     try:
@@ -201,7 +207,7 @@ def test_fuzz_random_text_only_raises_parse_error(text):
     validate_chain_dict(c.to_dict())
 
 
-@settings(max_examples=2500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=3000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(_WORDS, max_size=30))
 def test_fuzz_instruction_like_word_soup_only_raises_parse_error(words):
     try:

@@ -106,6 +106,11 @@ _SENS_B = re.compile(
     r"(?:\b(?:with|having|at|of|showing|reading)\s+(?:an?\s+)?)?"
     rf"(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST + rf"\s*(?P<rd>{READ_ALT})"
 )
+_SENS_RANGE = re.compile(
+    _S_LEAD + rf"(?:(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?\s+(?:(?:is|of|reading)\s+)?)?"
+    rf"\bbetween\s+(?P<lo>{NUM}){_NUM_END}\s*(?P<u1>{UNIT})?\s*(?:and|to|-)\s*(?P<hi>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?"
+)
+_DECIMAL_COMMA = re.compile(r"(?P<k>⟪[a-z]+⟫)\s*(?P<rest>,\d+)")
 _COMPARATIVE = re.compile(
     rf"\b(?P<adj>{_alt(L.COMPARATIVES)})\s+than\s+(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?"
 )
@@ -243,16 +248,17 @@ def _key(i: int) -> str:
 @dataclasses.dataclass
 class _Marks:
     locations: dict[str, Location] = dataclasses.field(default_factory=dict)
-    sensors: dict[str, SensorConstraint] = dataclasses.field(default_factory=dict)
+    sensors: dict[str, tuple[SensorConstraint, ...]] = dataclasses.field(default_factory=dict)
     text: dict[str, str] = dataclasses.field(default_factory=dict)
 
-    def add(self, original: str, location: Location | None = None, sensor: SensorConstraint | None = None) -> str:
+    def add(self, original: str, location: Location | None = None,
+            sensor: SensorConstraint | tuple[SensorConstraint, ...] | None = None) -> str:
         k = _key(len(self.text))
         self.text[k] = original.strip()
         if location is not None:
             self.locations[k] = location
         if sensor is not None:
-            self.sensors[k] = sensor
+            self.sensors[k] = sensor if isinstance(sensor, tuple) else (sensor,)
         return f" {k} "
 
     def restore(self, s: str) -> str:
@@ -335,6 +341,16 @@ def _cut(s: str, marks: _Marks) -> str:
             c = _sensor(None, _cmp_code(m.group("cmp"), m.group("post")), m.group("num"), m.group("unit"), m.group(0))
         return marks.add(m.group(0), sensor=c)
 
+    def between(m: re.Match) -> str:
+        rd = L.READING_NAMES[re.sub(r"\s+", " ", m.group("rd"))] if m.group("rd") else None
+        unit = m.group("unit") or m.group("u1")
+        lo = _sensor(rd, "ge", m.group("lo"), unit, m.group(0))
+        hi = _sensor(lo.reading, "le", m.group("hi"), unit, m.group(0))
+        if lo.value > hi.value:
+            lo, hi = dataclasses.replace(lo, value=hi.value), dataclasses.replace(hi, value=lo.value)
+        return marks.add(m.group(0), sensor=(lo, hi))
+
+    s = _SENS_RANGE.sub(between, s)
     s = _SUPER_READ2.sub(superlative_reading, s)
     s = _SUPER_READ.sub(superlative_reading, s)
     s = _COMPARATIVE.sub(comparative, s)
@@ -348,6 +364,10 @@ def _cut(s: str, marks: _Marks) -> str:
         m = rx.search(s)
         if m:
             raise ParseError(f"could not read {what}: '{marks.restore(m.group('all'))}' (write a number, e.g. 'NDVI above 0.6' or 'about 55 degrees')")
+    m = _DECIMAL_COMMA.search(s)
+    if m and m.group("k") in marks.sensors:
+        raise ParseError(f"could not read the number in '{marks.text[m.group('k')]}{m.group('rest')}' "
+                         "(write decimals with a point, e.g. 0.6)")
     m = _BAD_PAREN.search(s)
     if m:
         raise ParseError(f"could not read the coordinates '{m.group(0)}' (write them like (3.5, 2.0) or x=3.5, y=2)")
@@ -372,13 +392,16 @@ class _Node:
     def pronoun(self) -> bool:
         return bool(self.words) and all(w in L.PRONOUN_ANCHORS for w in self.words)
 
-    def target(self, antecedent: Target | None) -> Target:
+    def target(self, antecedent: Target | None, depth: int = 0) -> Target:
         if self.pronoun and antecedent is not None:
             base = dataclasses.replace(antecedent, relations=())
         else:
             attrs, head = split_noun_phrase(self.words)
             base = Target(" ".join(self.words), head, attrs)
-        rels = tuple(Relation(t, n.target(antecedent)) for t, n in self.relations)
+        # A pronoun anchor refers to the previous goal; inside a nested phrase ("the desk, which has a lamp
+        # on it") or with no previous goal it refers to the phrase itself, and adds nothing.
+        rels = tuple(Relation(t, n.target(antecedent, depth + 1)) for t, n in self.relations
+                     if not (n.pronoun and (antecedent is None or depth > 0)))
         return dataclasses.replace(base, relations=base.relations + rels)
 
 
@@ -513,10 +536,16 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             if t in marks.locations:
                 piece.locations.append(marks.locations[t])
             if t in marks.sensors:
-                piece.sensors.append(marks.sensors[t])
+                piece.sensors.extend(marks.sensors[t])
         else:
             tokens.append(t)
     tokens = _strip_leaders(tokens)
+    continuation = bool(tokens) and tokens[0] in ("which", "that", "who", "where", "whose")
+    if continuation:  # ", which should be hotter than 100 degrees": constraints of the previous goal
+        j = 0
+        while j < len(tokens) and _relation_at(tokens, j) is None:
+            j += 1
+        tokens = tokens[j:]
     words, i = _read_np(tokens, 0)
     top = _Node(words)
     current = top
@@ -633,7 +662,7 @@ def parse_instruction(text: str) -> TaskChain:
     for idx, g in enumerate(goals):
         antecedent = subgoals[-1].target if subgoals else None
         target = g.node.target(antecedent)
-        extra = tuple(Relation(t, n.target(antecedent)) for t, n in g.relations)
+        extra = tuple(Relation(t, n.target(antecedent, 1)) for t, n in g.relations if not n.pronoun or antecedent)
         if extra:
             target = dataclasses.replace(target, relations=target.relations + extra)
         subgoals.append(
