@@ -129,10 +129,11 @@ class MemoryConfig:
 
     # key poses (memory/keyposes.py)
     keyframe_rule: str = "both"  # spacing | novelty | both
-    keyframe_spacing: float = 1.5  # metres: a record with no key pose in sight this close becomes one
-    keyframe_min_spacing: float = 0.5  # metres: the novelty rule never adds a key pose closer than this
-    novelty_threshold: float = 0.5  # share of never-seen objects in view that makes a record novel
-    observation_window: int = 0  # records either side merged into a node's observation
+    # tuned so that the paper preset's maps average about 80 nodes (README, Memory)
+    keyframe_spacing: float = 0.8  # metres: a record with no key pose in sight this close becomes one
+    keyframe_min_spacing: float = 0.3  # metres: the novelty rule never adds a key pose closer than this
+    novelty_threshold: float = 0.25  # share of never-seen objects in view that makes a record novel
+    observation_window: int = 10  # records either side merged into a node's observation (a look around)
     max_objects_per_node: int = 16  # padded width of the node -> observed objects arrays
     # captions (memory/captioner.py); room types are never handed to the captioner
     captioner: str = "template"  # template | llm (uses the llm section)

@@ -10,8 +10,14 @@ from scipy.cluster.hierarchy import linkage
 from scipy.spatial.distance import pdist, squareform
 
 from ragnav_jax.memory.forest import (
-    LINKAGES, agglomerate_batched, agglomerate_jit, build_forest_batched, clustering_distance, fused_features,
-    hybrid_similarity, to_scipy_linkage,
+    LINKAGES,
+    agglomerate_batched,
+    agglomerate_jit,
+    build_forest_batched,
+    clustering_distance,
+    fused_features,
+    hybrid_similarity,
+    to_scipy_linkage,
 )
 
 
@@ -96,7 +102,7 @@ def test_forest_levels_parents_and_embeddings(metric):
     L = 1 + len(level_sizes)
     f = type(f)(*(np.asarray(x) for x in f))
     for b, n in enumerate(counts):
-        per_level = [int(f.mask[b, l * N:(l + 1) * N].sum()) for l in range(L)]
+        per_level = [int(f.mask[b, lv * N:(lv + 1) * N].sum()) for lv in range(L)]
         want = [n] + [max(1, int(np.ceil(n / s))) for s in level_sizes]
         want = [min(want[: k + 1]) for k in range(L)]
         assert per_level == want

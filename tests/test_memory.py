@@ -15,7 +15,7 @@ from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import LLMConfig, WorldConfig, load_config
 from ragnav_jax.errors import UserError
-from ragnav_jax.memory.build import build_bank, caption_noise, keyframe_rule, memory_summary
+from ragnav_jax.memory.build import build_bank, caption_noise, memory_summary
 from ragnav_jax.memory.captioner import CONFUSIONS, SYNONYMS, canonical, template_caption
 from ragnav_jax.memory.checkpoint import load_bank, save_bank
 from ragnav_jax.memory.keyposes import KeyframeRule, observe, select_key_poses
@@ -157,7 +157,7 @@ def _segment_blocked(scene, p, q, clearance: float) -> bool:
 def test_edges_never_cross_walls_or_objects(scenes, built):
     bank, _ = built
     total = 0
-    for b, scene in enumerate(scenes):
+    for scene in scenes:
         mem, meta = bank.scene(scene.name)
         n = meta.num_nodes
         adj = np.asarray(mem.adjacency)[:n, :n]

@@ -90,10 +90,10 @@ def synthetic_stream(scene: Scene, res: float = 0.1, spin_steps: int = 8) -> Exp
         for k in range(spin_steps):
             poses.append((xs[cur], ys[cur], yaw0 + 2 * math.pi * (k + 1) / spin_steps))
     poses = poses[::1] or [(scene.start.position[0], scene.start.position[1], scene.start.yaw)]
-    T, O = len(poses), len(scene.objects)
-    vis = np.zeros((T, O), bool)
-    dist = np.zeros((T, O), np.float32)
-    bear = np.zeros((T, O), np.float32)
+    T, n_obj = len(poses), len(scene.objects)
+    vis = np.zeros((T, n_obj), bool)
+    dist = np.zeros((T, n_obj), np.float32)
+    bear = np.zeros((T, n_obj), np.float32)
     for t, (x, y, yaw) in enumerate(poses):
         for o_i, o in enumerate(scene.objects):
             dx, dy = o.position[0] - x, o.position[1] - y

@@ -9,7 +9,11 @@ import numpy as np
 import pytest
 
 from ragnav_jax.memory.paths import (
-    all_pairs_shortest_paths, batched_shortest_paths, connected_components, reconstruct_path, shortest_paths,
+    all_pairs_shortest_paths,
+    batched_shortest_paths,
+    connected_components,
+    reconstruct_path,
+    shortest_paths,
 )
 
 

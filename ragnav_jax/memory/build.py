@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax
 import jax.numpy as jnp
@@ -89,7 +89,7 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
     sensor_names = tuple(sorted({k for s in scenes for o in s.objects for k, _ in o.sensors}))
     observations: list[list[NodeObservation]] = []
     captions: list[list[cap.Caption]] = []
-    for b, (scene, stream) in enumerate(zip(scenes, streams)):
+    for scene, stream in zip(scenes, streams):
         bar.set_description(f"memory: key poses + captions {scene.name}")
         _check_stream(scene, stream)
         t0 = time.perf_counter()

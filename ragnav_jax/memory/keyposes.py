@@ -18,11 +18,13 @@ import dataclasses
 
 import numpy as np
 
-from ragnav_jax.memory.topomap import segment_clearance
+from ragnav_jax.memory.topomap import segment_segment_distance
 from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.scene import Scene
 
 LINK_MARGIN = 0.05  # metres kept inside the edge thresholds so float32 edges agree with host links
+MIN_MOVE = 0.05  # metres: records closer than this to the last considered one, and ...
+MIN_TURN = 0.15  # ... turned less than this (radians), add nothing new and are skipped
 
 
 @dataclasses.dataclass(frozen=True)
@@ -62,15 +64,22 @@ def select_key_poses(stream: ExplorationStream, obstacles: dict, rule: KeyframeR
     link_d = rule.link_distance - LINK_MARGIN
     link_c = rule.link_clearance + LINK_MARGIN
 
+    segs = obstacle_segments(obstacles)
+
     def clear(a: np.ndarray, b: np.ndarray) -> np.ndarray:  # a (P, 2), b (P, 2) -> (P,) bool
-        return segment_clearance(a, b, obstacles, np) > link_c
+        return segments_clearance(a, b, segs) > link_c
 
     keys = [0]
     key_xy = [xy[0]]
     seen = vis[0].copy()
     anchor = 0
+    yaw = stream.pose[:, 3].astype(np.float64)
+    last = 0  # last record considered
     for t in range(1, T):
         p = xy[t]
+        turn = abs((yaw[t] - yaw[last] + np.pi) % (2 * np.pi) - np.pi)
+        if t < T - 1 and np.hypot(*(p - xy[last])) < MIN_MOVE and turn < MIN_TURN and not (vis[t] & ~seen).any():
+            continue
         K = np.asarray(key_xy)
         d = np.hypot(K[:, 0] - p[0], K[:, 1] - p[1])
         # Revisits: re-anchor on the nearest key pose in sight when it is closer than the anchor.
@@ -78,7 +87,7 @@ def select_key_poses(stream: ExplorationStream, obstacles: dict, rule: KeyframeR
         if near != anchor and d[near] < d[anchor] and clear(K[near][None], p[None])[0]:
             anchor = near
         if not (d[anchor] < link_d and clear(K[anchor][None], p[None])[0]):
-            prev = t - 1
+            prev = last
             if keys[-1] != prev:
                 keys.append(prev)
                 key_xy.append(xy[prev])
@@ -99,7 +108,32 @@ def select_key_poses(stream: ExplorationStream, obstacles: dict, rule: KeyframeR
             key_xy.append(p)
             seen |= vis[t]
             anchor = len(keys) - 1
+        last = t
     return np.asarray(keys, np.int64)
+
+
+def obstacle_segments(obs: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Walls and the four sides of every blocking box as one segment list: a (G, 2), b (G, 2), half width (G,)."""
+    wm = np.asarray(obs["wall_mask"], bool)
+    a, b, h = [np.asarray(obs["wall_a"])[wm]], [np.asarray(obs["wall_b"])[wm]], [np.asarray(obs["wall_half"])[wm]]
+    bm = np.asarray(obs["box_mask"], bool)
+    c, hb = np.asarray(obs["box_center"])[bm], np.asarray(obs["box_half"])[bm]
+    corners = [c + hb * np.array(s) for s in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    for k in range(4):
+        a.append(corners[k])
+        b.append(corners[(k + 1) % 4])
+        h.append(np.zeros(len(c)))
+    return np.concatenate(a).astype(np.float64), np.concatenate(b).astype(np.float64), np.concatenate(h)
+
+
+def segments_clearance(p: np.ndarray, q: np.ndarray, segs) -> np.ndarray:
+    """Host clearance of segments p-q (P, 2) to obstacle segments (boxes as their sides; a segment wholly
+    inside a box is impossible here because both ends are robot positions)."""
+    a, b, h = segs
+    if len(a) == 0:
+        return np.full(p.shape[0], np.inf)
+    d = segment_segment_distance(p[:, None, :], q[:, None, :], a[None], b[None], np) - h[None]
+    return d.min(axis=1)
 
 
 def observe(stream: ExplorationStream, records: np.ndarray, window: int = 0) -> list[NodeObservation]:

@@ -58,7 +58,7 @@ def segment_box_distance(p, q, center, half, xp=np):
 
 def obstacles_numpy(scene, sizes=None) -> dict:
     """The obstacle arrays of one scene for `segment_clearance` (walls and floor-standing objects)."""
-    from ragnav_jax.world.arrays import scene_to_numpy, pad_sizes
+    from ragnav_jax.world.arrays import pad_sizes, scene_to_numpy
 
     sizes = sizes or pad_sizes([scene])
     cats = sorted({o.category for o in scene.objects})

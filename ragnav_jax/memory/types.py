@@ -77,7 +77,7 @@ class MemoryMeta:
         return dataclasses.asdict(self)
 
     @staticmethod
-    def from_json(d: dict) -> "MemoryMeta":
+    def from_json(d: dict) -> MemoryMeta:
         tup = lambda x: tuple(tuple(v) if isinstance(v, list) else v for v in x)  # noqa: E731
         return MemoryMeta(
             scene=d["scene"], num_nodes=int(d["num_nodes"]), captions=tuple(d["captions"]),
