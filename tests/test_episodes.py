@@ -185,3 +185,8 @@ def test_cli_episodes_user_errors(tmp_path, capsys):
     assert main(["episodes", "--scenes", str(example_scene_path()), "--out", str(ok), "--quiet"]) == 0
     save_episodes(load_episodes(ok)[:1], tmp_path / "one.jsonl")
     assert main(["check-parse", str(tmp_path / "one.jsonl"), "--truth", str(tmp_path / "nope.jsonl")]) == 2
+    broken = tmp_path / "broken.jsonl"
+    broken.write_text(ok.read_text().splitlines()[0] + "\n{not json\n")
+    assert main(["check-parse", str(broken)]) == 2
+    err = capsys.readouterr().err
+    assert "broken.jsonl: line 2: not valid JSON" in err
