@@ -248,7 +248,8 @@ class ExploreConfig:
     stall_steps: int = 30  # control steps without progress (< 2 mm each) before a target is given up
     look_sweep_deg: float = 60.0  # camera heading sweeps this far either side of the motion (0: look ahead)
     look_period: float = 4.0  # seconds per sweep cycle
-    max_steps: int = 3000  # control steps per scene (the step budget)
+    camera_frontiers: bool = True  # also visit free space the camera has not looked at (the paper: lidar only)
+    max_steps: int = 5000  # control steps per scene (the step budget)
     scan_every: int = 1  # control steps between lidar/camera records (and map updates)
     batch_size: int = 8  # scenes explored together in one vmapped call
 
