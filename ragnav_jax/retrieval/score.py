@@ -34,12 +34,12 @@ from ragnav_jax.retrieval.query import QueryArrays
 class RetrievalIndex:
     """What retrieval reads from one scene's DualBasisMemory (padded; a leading axis for many scenes)."""
 
-    node_emb: jnp.ndarray  # (N, D) fingerprint embeddings psi(v_i), unit rows
+    node_emb: jnp.ndarray  # (N, D) fingerprint embeddings psi(v_i), unit rows (zeros for padding)
     node_pos: jnp.ndarray  # (N, 3) key-pose positions
     node_mask: jnp.ndarray  # (N,) bool
     nbr: jnp.ndarray  # (N, Dmax) int32 neighbour lists of G_t, -1 padding
     nbr_mask: jnp.ndarray  # (N, Dmax) bool
-    slot_emb: jnp.ndarray  # (N, M, D) embedding of each observed instance's caption phrase
+    slot_emb: jnp.ndarray  # (N, M, D) unit embedding of each observed instance's caption phrase
     slot_pos: jnp.ndarray  # (N, M, 3) estimated instance positions
     slot_sensors: jnp.ndarray  # (N, M, S) readings of each instance
     slot_sensor_mask: jnp.ndarray  # (N, M, S) bool
@@ -50,18 +50,29 @@ class RetrievalIndex:
     leaf_cluster: jnp.ndarray  # (N, L) int32 cluster of each node at each level
 
 
-def _cos_rows(q: jax.Array, emb: jax.Array) -> jax.Array:
-    """Cosine of q (D,) with every row of emb (..., D)."""
-    qn = q / jnp.maximum(jnp.linalg.norm(q), 1e-12)
-    en = emb / jnp.maximum(jnp.linalg.norm(emb, axis=-1, keepdims=True), 1e-12)
-    return en @ qn
+def _unit(q: jax.Array) -> jax.Array:
+    return q / jnp.maximum(jnp.linalg.norm(q, axis=-1, keepdims=True), 1e-12)
+
+
+def _query_sims(q: QueryArrays, emb: jax.Array) -> jax.Array:
+    """Cosines of the target, head and anchor phrases with unit rows emb (..., D) in one pass: (3, ...)."""
+    qs = _unit(jnp.stack([q.target, q.head, q.anchor]))  # (3, D)
+    return jnp.moveaxis(emb @ qs.T, -1, 0)
+
+
+def _pow(x: jax.Array, w: jax.Array) -> jax.Array:
+    """x ** w for x >= 0, with a finite gradient in w where x == 0 (the value is jnp.power's)."""
+    pos = x > 0
+    return jnp.where(pos, jnp.power(jnp.where(pos, x, 1.0), w), jax.lax.stop_gradient(jnp.power(x, w)))
 
 
 def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
-    """Per-instance scores (N, M) with the location and sensor terms applied, and the terms."""
-    node_sem = jnp.where(idx.node_mask, _cos_rows(q.target, idx.node_emb), 0.0)  # (N,)
-    slot_sim = _cos_rows(q.target, idx.slot_emb)  # (N, M)
-    head_sim = _cos_rows(q.head, idx.slot_emb)
+    """Per-instance scores (N, M) with the location and sensor terms applied, and the terms.
+
+    Embeddings in the index are unit rows (the embedders normalise), so cosines are dot products.
+    """
+    node_sem = jnp.where(idx.node_mask, idx.node_emb @ _unit(q.target), 0.0)  # (N,)
+    slot_sim, head_sim, anchor_sim = _query_sims(q, idx.slot_emb)  # each (N, M)
     base = (1.0 - p.w_slot) * node_sem[:, None] + p.w_slot * slot_sim
     loc = jnp.where(q.has_hint, K.location_term(idx.slot_pos, q.hint, p.sigma_loc), 1.0)
     match = (head_sim >= p.match_threshold) & idx.slot_mask  # (N, M): instances of the target category
@@ -70,13 +81,16 @@ def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
         flat(idx.slot_sensors), flat(idx.slot_sensor_mask), flat(match), q.sensor_channel, q.sensor_op,
         q.sensor_value, q.sensor_scale,
     ).reshape(base.shape)
-    inst = base * jnp.power(loc, p.w_loc) * jnp.power(sens, p.w_sensor)
+    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor)
     inst = jnp.where(idx.slot_mask & idx.node_mask[:, None], inst, K.NEG)
-    return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens)
+    return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens, anchor_sim=anchor_sim)
 
 
-def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
+def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, gate_tau: jax.Array | None = None):
     """Scores every node of one scene for one subgoal.
+
+    gate_tau (the tuning surrogate's, evaluation leaves it None) gives the anchor and boost thresholds
+    straight-through gradients (kernels.gate); the scores are the same either way.
 
     Returns scores (N,) (K.NEG where masked or pruned) and an explanation dict of per-node arrays:
     node_sem, instance (best instance index), instance_sim, loc, sensor, anchor (node index or -1),
@@ -89,12 +103,12 @@ def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     valid = s > K.NEG / 2
 
     # Anchor phrase score per node: its best instance's similarity to the anchor phrase.
-    anchor_inst = jnp.where(idx.slot_mask, _cos_rows(q.anchor, idx.slot_emb), K.NEG)
+    anchor_inst = jnp.where(idx.slot_mask, t["anchor_sim"], K.NEG)
     sem_b = jnp.where(idx.node_mask, jnp.max(anchor_inst, axis=1), K.NEG)
     use_anchor = q.has_anchor & (p.use_spatial > 0) & (p.use_topology > 0)
     s_anchor, anchor, _ = K.anchor_guided(
         s, sem_b, idx.node_pos, idx.nbr, idx.nbr_mask, jnp.minimum(p.top_k, MAX_K), p.hops,
-        p.anchor_threshold, p.sigma, max_k=min(MAX_K, s.shape[0]), max_hops=MAX_HOPS,
+        p.anchor_threshold, p.sigma, max_k=min(MAX_K, s.shape[0]), max_hops=MAX_HOPS, gate_tau=gate_tau,
     )
     anchored = use_anchor & jnp.any(s_anchor > K.NEG / 2)
     s = jnp.where(anchored, s_anchor, s)
@@ -105,7 +119,7 @@ def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     eta = p.eta * p.use_boost * p.use_topology
     boosted, boost_mean = K.neighbour_boost(
         jnp.where(s > K.NEG / 2, s, 0.0), ctx, idx.nbr, idx.nbr_mask, idx.node_mask, eta, p.boost_threshold,
-        p.boost_hops, max_hops=1,
+        p.boost_hops, max_hops=1, gate_tau=gate_tau,
     )
     s = jnp.where(s > K.NEG / 2, boosted, K.NEG)
 
