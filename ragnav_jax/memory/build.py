@@ -213,6 +213,7 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
             tree_labels=tuple(tree_labels), tree_summaries=tuple(tree_summaries),
             object_ids=tuple(o.id for o in scene.objects), sensor_names=sensor_names,
             num_components=int(comps[b].max() + 1) if n else 0, embedder=embedder.name, config=to_dict(m),
+            caption_objects=tuple(c.objects for c in captions[b]), caption_phrases=tuple(c.phrases for c in captions[b]),
         ))
     timings["summaries"] = time.perf_counter() - t0
     bar.update(1)

@@ -111,6 +111,8 @@ class CaptionNoise:
 class Caption:
     text: str
     labels: tuple[str, ...]  # the surface labels used, in caption order (what a summariser can read)
+    objects: tuple[int, ...] = ()  # scene object index each described instance refers to, caption order
+    phrases: tuple[str, ...] = ()  # the phrase describing each of them, caption order
 
 
 def _rng(seed: int, scene: str, node: int) -> np.random.Generator:
@@ -180,6 +182,7 @@ def template_caption(scene: Scene, obs: NodeObservation, node: int, seed: int, n
         rng.shuffle(order)
     phrases = [phrases[i] for i in order]
     labels = [labels[i] for i in order]
+    objects = [int(kept[i][0]) for i in order]
     t = TEMPLATES[int(rng.integers(len(TEMPLATES)))]
     if "{first}" in t and len(phrases) < 2:
         t = TEMPLATES[0]
@@ -188,7 +191,7 @@ def template_caption(scene: Scene, obs: NodeObservation, node: int, seed: int, n
     else:
         lst = _join(rng, phrases)
         text = t.format(list=lst, List=lst[0].upper() + lst[1:])
-    return Caption(text, tuple(labels))
+    return Caption(text, tuple(labels), tuple(objects), tuple(phrases))
 
 
 def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg) -> Caption:
@@ -207,4 +210,4 @@ def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg) -> Caption:
     )
     text = chat(llm_cfg, [{"role": "user", "content": prompt}]).strip()
     labels = tuple(scene.objects[oi].category for oi in obs.objects)
-    return Caption(text or "Nothing notable in view.", labels)
+    return Caption(text or "Nothing notable in view.", labels, tuple(int(oi) for oi in obs.objects), labels)

@@ -72,6 +72,8 @@ class MemoryMeta:
     num_components: int
     embedder: str
     config: dict  # the memory config that built it
+    caption_objects: tuple[tuple[int, ...], ...] = ()  # (n,) scene object index of each described instance
+    caption_phrases: tuple[tuple[str, ...], ...] = ()  # (n,) the caption's phrase for each of them
 
     def to_json(self) -> dict:
         return dataclasses.asdict(self)
@@ -85,6 +87,8 @@ class MemoryMeta:
             tree_labels=tuple(d["tree_labels"]), tree_summaries=tuple(d["tree_summaries"]),
             object_ids=tuple(d["object_ids"]), sensor_names=tuple(d["sensor_names"]),
             num_components=int(d["num_components"]), embedder=d["embedder"], config=dict(d["config"]),
+            caption_objects=tuple(tuple(int(x) for x in v) for v in d.get("caption_objects", ())),
+            caption_phrases=tup(d.get("caption_phrases", ())),
         )
 
 

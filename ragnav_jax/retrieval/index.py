@@ -34,9 +34,8 @@ class IndexMeta:
 
 def node_slots(meta: MemoryMeta, scene: Scene) -> tuple[list[list[int]], list[list[str]]]:
     """(object indices, phrases) each node's caption describes."""
-    objs = getattr(meta, "caption_objects", None)
-    phrases = getattr(meta, "caption_phrases", None)
-    if objs is None or phrases is None:  # older memories: fall back to labels of the nearest objects
+    objs, phrases = meta.caption_objects, meta.caption_phrases
+    if len(objs) != meta.num_nodes:  # memories built before captions recorded their instances
         ids = {o.id: k for k, o in enumerate(scene.objects)}
         objs = [[ids[i] for i in obs[: len(lab)]] for obs, lab in zip(meta.observed_ids, meta.caption_labels)]
         phrases = [list(lab) for lab in meta.caption_labels]
