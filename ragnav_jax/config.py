@@ -331,6 +331,87 @@ class RetrievalConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class SweepAxes:
+    """Values of each swept hyperparameter (empty: not varied, the retrieval/planning section's value)."""
+
+    sigma: tuple[float, ...] = ()
+    eta: tuple[float, ...] = ()
+    top_k: tuple[int, ...] = ()
+    hops: tuple[int, ...] = ()
+    boost_hops: tuple[int, ...] = ()
+    beam: tuple[int, ...] = ()
+    anchor_threshold: tuple[float, ...] = ()
+    boost_threshold: tuple[float, ...] = ()
+    w_slot: tuple[float, ...] = ()
+    match_threshold: tuple[float, ...] = ()
+    sigma_loc: tuple[float, ...] = ()
+    w_loc: tuple[float, ...] = ()
+    w_sensor: tuple[float, ...] = ()
+    lam: tuple[float, ...] = ()  # planning lambda: enters navigation metrics only (not retrieval accuracy)
+
+    def __post_init__(self):
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            _check(len(set(v)) == len(v), f"sweep.axes.{f.name}", "values must be distinct")
+        _check(all(x > 0 for x in self.sigma + self.sigma_loc), "sweep.axes.sigma", "sigma and sigma_loc must be > 0")
+        _check(all(1 <= x <= 16 for x in self.top_k), "sweep.axes.top_k", "must be in [1, 16]")
+        _check(all(0 <= x <= 3 for x in self.hops) and all(0 <= x <= 1 for x in self.boost_hops), "sweep.axes.hops",
+               "hops in [0, 3], boost_hops in [0, 1]")
+        _check(all(1 <= x <= 8 for x in self.beam), "sweep.axes.beam", "must be in [1, 8]")
+        _check(all(x >= 0 for x in self.lam), "sweep.axes.lam", "must be >= 0")
+
+
+@dataclasses.dataclass(frozen=True)
+class SweepConfig:
+    """Hyperparameter grid (ragnav sweep): the product of the axes, times the ablation variants."""
+
+    axes: SweepAxes = dataclasses.field(default_factory=SweepAxes)
+    variants: tuple[str, ...] = ("ragnav",)  # names from retrieval/params.py ABLATIONS, same batched call
+    chunk_size: int = 256  # grid points per compiled call (and per checkpoint)
+    checkpoint: bool = True  # save each finished chunk (orbax) so a killed sweep resumes where it stopped
+    shard: bool = True  # split each chunk's grid points over all devices (jax.sharding)
+    heatmap: tuple[str, str] = ("sigma", "eta")  # axes of the heatmaps (x, y); other axes: best value
+    pause_s: float = 0.0  # wait after each chunk (demos and the kill-and-resume test); 0 in real runs
+
+    def __post_init__(self):
+        # variant names are checked against retrieval/params.py ABLATIONS when the sweep starts (no jax here)
+        _check(len(self.variants) >= 1 and len(set(self.variants)) == len(self.variants), "sweep.variants",
+               "must list one or more distinct ablation variants")
+        _check(self.chunk_size >= 1, "sweep.chunk_size", "must be >= 1")
+        names = [f.name for f in dataclasses.fields(SweepAxes)]
+        _check(all(h in names for h in self.heatmap) and self.heatmap[0] != self.heatmap[1], "sweep.heatmap",
+               f"two different axes among {', '.join(names)}")
+        _check(self.pause_s >= 0, "sweep.pause_s", "must be >= 0")
+
+
+TUNABLE = ("sigma", "eta", "sigma_loc", "w_slot", "w_loc", "w_sensor", "anchor_threshold", "boost_threshold")
+
+
+@dataclasses.dataclass(frozen=True)
+class TuneConfig:
+    """Gradient tuning of the continuous retrieval hyperparameters (ragnav tune), optax on a surrogate."""
+
+    params: tuple[str, ...] = TUNABLE  # which RetrievalParams fields move
+    steps: int = 200  # optimiser steps (full batch of the training split)
+    learning_rate: float = 0.03  # Adam, on log / logit / raw parameters (see evaluation/tune.py)
+    eval_every: int = 20  # steps per compiled segment; training accuracy is checked between segments
+    temperature: float = 0.05  # initial softmax temperature of the surrogate (learned with the rest)
+    gate_tau: float = 0.05  # softness of the threshold gates' straight-through gradients
+    train_fraction: float = 0.5  # share of each (scene, modality)'s episodes in the training split
+    split_seed: int = 0
+    init: str = "grid"  # grid: start from the best sweep point on the training split | config: from retrieval
+
+    def __post_init__(self):
+        _check(len(self.params) >= 1 and all(x in TUNABLE for x in self.params), "tune.params",
+               f"must name one or more of {', '.join(TUNABLE)}")
+        _check(self.steps >= 1 and self.eval_every >= 1, "tune.steps", "steps and eval_every must be >= 1")
+        _check(self.learning_rate > 0 and self.temperature > 0 and self.gate_tau > 0, "tune.learning_rate",
+               "learning_rate, temperature and gate_tau must be > 0")
+        _check(0.0 < self.train_fraction < 1.0, "tune.train_fraction", "must be in (0, 1)")
+        _check(self.init in ("grid", "config"), "tune.init", "must be grid or config")
+
+
+@dataclasses.dataclass(frozen=True)
 class Config:
     """The whole resolved configuration of a run."""
 
@@ -344,6 +425,8 @@ class Config:
     episodes: EpisodesConfig = dataclasses.field(default_factory=EpisodesConfig)
     planning: PlanningConfig = dataclasses.field(default_factory=PlanningConfig)
     retrieval: RetrievalConfig = dataclasses.field(default_factory=RetrievalConfig)
+    sweep: SweepConfig = dataclasses.field(default_factory=SweepConfig)
+    tune: TuneConfig = dataclasses.field(default_factory=TuneConfig)
 
 
 # ----------------------------------------------------------------------------------------------------

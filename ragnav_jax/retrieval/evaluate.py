@@ -15,6 +15,7 @@ reported apart (`compile_s`).
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections import defaultdict
 from typing import Sequence
@@ -22,16 +23,17 @@ from typing import Sequence
 import jax
 import jax.numpy as jnp
 import numpy as np
+from flax import struct
 
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.language.types import ParseError, Subgoal
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
-from ragnav_jax.retrieval.index import build_bank_index, node_slots
+from ragnav_jax.retrieval.index import IndexMeta, build_bank_index, node_slots
 from ragnav_jax.retrieval.params import ABLATIONS, RetrievalParams, ablation_params
-from ragnav_jax.retrieval.query import encode_subgoals
-from ragnav_jax.retrieval.score import score_subgoal
+from ragnav_jax.retrieval.query import QueryArrays, encode_subgoals
+from ragnav_jax.retrieval.score import RetrievalIndex, score_subgoal
 from ragnav_jax.world.scene import Scene
 
 METHODS = tuple(f"ragnav:{a}" if a != "ragnav" else "ragnav" for a in ABLATIONS) + tuple(BASELINES)
@@ -46,18 +48,119 @@ def _median_time(fn, repeats: int = 7) -> float:
     return float(np.median(ts))
 
 
-@jax.jit
-def score_bank(index, queries, qmask, params):
-    """Scores for every (scene, query slot): index (B, ...), queries (B, Q, ...), qmask (B, Q).
+def node_scores(index: RetrievalIndex, queries: QueryArrays, params: RetrievalParams, gate_tau=None) -> jax.Array:
+    """Scores of every node for every (scene, query slot): index (B, ...), queries (B, Q, ...) -> (B, Q, N).
 
-    Returns best node (B, Q) int32 and its score (B, Q)."""
+    The one batched scoring path: evaluation, sweeps (vmapped over a grid of params) and the tuning
+    surrogate (with gate_tau) all call it.
+    """
 
     def one_scene(idx, qs):
-        s, _ = jax.vmap(score_subgoal, (None, 0, None))(idx, qs, params)
-        return jnp.argmax(s, axis=-1).astype(jnp.int32), jnp.max(s, axis=-1)
+        return jax.vmap(lambda q: score_subgoal(idx, q, params, gate_tau)[0])(qs)
 
-    best, top = jax.vmap(one_scene)(index, queries)
-    return jnp.where(qmask, best, -1), top
+    return jax.vmap(one_scene)(index, queries)
+
+
+def best_nodes(index: RetrievalIndex, queries: QueryArrays, qmask: jax.Array, params: RetrievalParams):
+    """Top-1 node (B, Q) int32 (-1 where qmask is False) and its score (B, Q)."""
+    s = node_scores(index, queries, params)
+    best = jnp.argmax(s, axis=-1).astype(jnp.int32)
+    return jnp.where(qmask, best, -1), jnp.max(s, axis=-1)
+
+
+score_bank = jax.jit(best_nodes)
+score_bank.__doc__ = "Jitted best_nodes: (index (B, ...), queries (B, Q, ...), qmask (B, Q), params) -> (best, top)."
+
+
+@struct.dataclass
+class RetrievalBatch:
+    """Every parsed subgoal of an episodes file grouped by scene (padded), with what accuracy needs."""
+
+    index: RetrievalIndex  # (B, ...) one per scene of the bank
+    queries: QueryArrays  # (B, Q, ...) the subgoals of each scene, padded
+    qmask: jax.Array  # (B, Q) bool, real subgoal slots
+    truth: jax.Array  # (B, Q, N) bool: node observes the slot's ground-truth goal instance
+    group: jax.Array  # (B, Q, G) bool: one-hot modality (BatchMeta.modalities) of the slot's episode
+
+
+@dataclasses.dataclass(frozen=True)
+class BatchMeta:
+    """Host-side bookkeeping of a RetrievalBatch."""
+
+    items: tuple  # (episode, goal k, goal object id, Subgoal or None) for every goal of every episode
+    slots: tuple  # (scene b, query slot) of each item, None where the instruction did not yield its subgoal
+    modalities: tuple[str, ...]  # G modality names
+    totals: np.ndarray  # (G,) goals per modality, parse failures included (the accuracy denominators)
+    imetas: tuple[IndexMeta, ...]  # per scene of the bank
+    embed_ms: float  # host time to embed the query texts, per subgoal
+
+
+def correct_counts(batch: RetrievalBatch, params: RetrievalParams) -> jax.Array:
+    """Top-1 instance-level hits per modality (G,) int32 for one parameter set; vmap it over a grid."""
+    best, _ = best_nodes(batch.index, batch.queries, batch.qmask, params)
+    hit = jnp.take_along_axis(batch.truth, jnp.maximum(best, 0)[..., None], axis=-1)[..., 0] & batch.qmask
+    return jnp.sum(batch.group & hit[..., None], axis=(0, 1)).astype(jnp.int32)
+
+
+def goal_items(episodes: Sequence[Episode]) -> list[tuple]:
+    """(episode, goal k, goal object id, Subgoal or None) for every goal of every episode, in order."""
+    items = []
+    for ep, sgs in zip(episodes, parse_all(episodes)):
+        for k, goal in enumerate(ep.goals):
+            items.append((ep, k, goal, sgs[k] if sgs is not None and k < len(sgs) else None))
+    return items
+
+
+def prepare_batch(
+    bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder,
+    index_and_metas: tuple | None = None, modalities: Sequence[str] | None = None,
+) -> tuple[RetrievalBatch | None, BatchMeta]:
+    """Parses, embeds and groups the episodes' subgoals by scene (host side, once per episodes file).
+
+    index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. Returns
+    (None, meta) when no instruction yields a subgoal.
+    """
+    names = list(bank.names)
+    unknown = sorted({ep.scene for ep in episodes} - set(names))
+    if unknown:
+        from ragnav_jax.errors import UserError
+
+        raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
+    index, imetas = index_and_metas or build_bank_index(bank, scenes, embedder)
+    items = goal_items(episodes)
+    mods = tuple(modalities) if modalities is not None else tuple(sorted({ep.modality for ep in episodes}))
+    totals = np.zeros(len(mods), np.int64)
+    for it in items:
+        totals[mods.index(it[0].modality)] += 1
+    live = [(i, it) for i, it in enumerate(items) if it[3] is not None]
+    slots: list = [None] * len(items)
+    if not live:
+        return None, BatchMeta(tuple(items), tuple(slots), mods, totals, tuple(imetas), 0.0)
+    sensor_names = list(bank.metas[0].sensor_names)
+    t0 = time.perf_counter()
+    q_all = encode_subgoals([it[3] for _, it in live], embedder, sensor_names)
+    embed_ms = 1e3 * (time.perf_counter() - t0) / len(live)
+    per_scene = defaultdict(list)
+    for pos, (i, it) in enumerate(live):
+        per_scene[names.index(it[0].scene)].append((pos, i))
+    B, Q, N = len(names), max(len(v) for v in per_scene.values()), int(index.node_mask.shape[1])
+    take = np.zeros((B, Q), np.int32)
+    qmask = np.zeros((B, Q), bool)
+    truth = np.zeros((B, Q, N), bool)
+    group = np.zeros((B, Q, len(mods)), bool)
+    objects = {s.name: {o.id: j for j, o in enumerate(s.objects)} for s in scenes}
+    for b, lst in per_scene.items():
+        observed = imetas[b].observed
+        for slot, (pos, i) in enumerate(lst):
+            ep, _, goal, _ = items[i]
+            take[b, slot], qmask[b, slot], slots[i] = pos, True, (b, slot)
+            gidx = objects[ep.scene].get(goal, -1)
+            truth[b, slot, : len(observed)] = [gidx in o for o in observed]
+            group[b, slot, mods.index(ep.modality)] = True
+    queries = jax.tree.map(lambda x: x[jnp.asarray(take)], q_all)
+    batch = RetrievalBatch(index=index, queries=queries, qmask=jnp.asarray(qmask), truth=jnp.asarray(truth),
+                           group=jnp.asarray(group))
+    return batch, BatchMeta(tuple(items), tuple(slots), mods, totals, tuple(imetas), embed_ms)
 
 
 def parse_all(episodes: Sequence[Episode]) -> list[tuple[Subgoal, ...] | None]:
@@ -86,54 +189,37 @@ def evaluate_retrieval(
         from ragnav_jax.errors import UserError
 
         raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
-    parsed = parse_all(episodes)
-    # Flat list of (episode, goal k, subgoal or None).
-    items = []
-    for ep, sgs in zip(episodes, parsed):
-        for k, goal in enumerate(ep.goals):
-            items.append((ep, k, goal, sgs[k] if sgs is not None and k < len(sgs) else None))
-    live = [(i, it) for i, it in enumerate(items) if it[3] is not None]
-    best_node = np.full(len(items), -1)
     timing: dict = {}
     if method.startswith("ragnav"):
         variant = method.split(":", 1)[1] if ":" in method else "ragnav"
         p = ablation_params(params or RetrievalParams.create(), variant)
-        index, imetas = build_bank_index(bank, scenes, embedder)
-        sensor_names = list(bank.metas[0].sensor_names)
-        t0 = time.perf_counter()
-        q_all = encode_subgoals([it[3] for _, it in live], embedder, sensor_names) if live else None
-        timing["embed_ms"] = 1e3 * (time.perf_counter() - t0) / max(len(live), 1)
-        if live:
-            per_scene = defaultdict(list)
-            for pos, (i, it) in enumerate(live):
-                per_scene[names.index(it[0].scene)].append((pos, i))
-            qmax = max(len(v) for v in per_scene.values())
-            B = len(names)
-            take = np.zeros((B, qmax), np.int32)
-            qmask = np.zeros((B, qmax), bool)
-            for b, lst in per_scene.items():
-                take[b, : len(lst)] = [pos for pos, _ in lst]
-                qmask[b, : len(lst)] = True
-            queries = jax.tree.map(lambda x: x[jnp.asarray(take)], q_all)
+        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
+        items = list(bmeta.items)
+        live = [i for i, sl in enumerate(bmeta.slots) if sl is not None]
+        best_node = np.full(len(items), -1)
+        timing["embed_ms"] = bmeta.embed_ms
+        if batch is not None:
+            index, queries, qmask = batch.index, batch.queries, batch.qmask
             t0 = time.perf_counter()
-            jax.block_until_ready(score_bank(index, queries, jnp.asarray(qmask), p))
+            jax.block_until_ready(score_bank(index, queries, qmask, p))
             timing["compile_s"] = time.perf_counter() - t0
-            run = lambda: score_bank(index, queries, jnp.asarray(qmask), p)  # noqa: E731
+            run = lambda: score_bank(index, queries, qmask, p)  # noqa: E731
             timing["retrieval_ms_batched"] = 1e3 * _median_time(run, 3) / len(live)
-            best, _ = run()
-            best = np.asarray(best)
-            for b, lst in per_scene.items():
-                for slot, (pos, i) in enumerate(lst):
-                    best_node[i] = best[b, slot]
+            best = np.asarray(run()[0])
+            for i in live:
+                best_node[i] = best[bmeta.slots[i]]
             # Warm single-query latency: one subgoal, one scene.
-            b0 = next(iter(per_scene))
+            b0, s0 = bmeta.slots[live[0]]
             idx0 = jax.tree.map(lambda x: x[b0], index)
-            q0 = jax.tree.map(lambda x: x[per_scene[b0][0][0]], q_all)
+            q0 = jax.tree.map(lambda x: x[b0, s0], queries)
             single = jax.jit(score_subgoal)
             jax.block_until_ready(single(idx0, q0, p))
             timing["retrieval_ms_single"] = 1e3 * _median_time(lambda: single(idx0, q0, p))
-        observed = {im.scene: im.observed for im in imetas}
+        observed = {im.scene: im.observed for im in bmeta.imetas}
     else:
+        items = goal_items(episodes)
+        live = [(i, it) for i, it in enumerate(items) if it[3] is not None]
+        best_node = np.full(len(items), -1)
         cls = BASELINES[method]
         observed = {}
         t_total, n_total = 0.0, 0

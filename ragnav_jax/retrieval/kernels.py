@@ -31,6 +31,20 @@ def cosine_scores(q: jax.Array, emb: jax.Array, mask: jax.Array) -> jax.Array:
     return jnp.where(mask, en @ qn, NEG)
 
 
+def gate(x: jax.Array, threshold: jax.Array, tau: jax.Array | None = None) -> jax.Array:
+    """1.0 where x >= threshold, else 0.0 (float, x's shape).
+
+    With tau (an array, the tuning surrogate's gate softness) the forward value is unchanged but the
+    gradient is that of sigmoid((x - threshold) / tau) (straight-through), so a threshold gets a
+    gradient while the scores stay exactly those of the hard kernel.
+    """
+    hard = (x >= threshold).astype(jnp.float32)
+    if tau is None:
+        return hard
+    soft = jax.nn.sigmoid((x - threshold) / tau)
+    return hard + (soft - jax.lax.stop_gradient(soft))
+
+
 def gaussian(dist2: jax.Array, sigma: jax.Array) -> jax.Array:
     """exp(-d^2 / (2 sigma^2)) for squared distances (any shape) and a scalar width."""
     return jnp.exp(-dist2 / (2.0 * sigma * sigma))
@@ -95,6 +109,7 @@ def anchor_guided(
     sigma: jax.Array,
     max_k: int = 16,
     max_hops: int = 3,
+    gate_tau: jax.Array | None = None,
 ) -> tuple[jax.Array, jax.Array, jax.Array]:
     """Two-stage anchor-guided retrieval for "A near B".
 
@@ -102,6 +117,7 @@ def anchor_guided(
     (itself included: one key pose often sees both objects) holds a node matching B
     (sem_b >= anchor_threshold); the anchor is the match maximising sem_b * S_combo, and the
     candidate's score is S_spatial(v_i | v_B) with that anchor. Pruned and non-candidate nodes get NEG.
+    gate_tau: see `gate` (the validated score is multiplied by the anchor's gate, 1.0 in the forward pass).
 
     sem_a, sem_b: (N,); pos: (N, 3); nbr, nbr_mask: (N, Dmax). Returns (scores (N,), anchor (N,) int32
     with -1 where none, has_anchor (N,) bool).
@@ -114,7 +130,7 @@ def anchor_guided(
     pair = jnp.where(ok, sem_b[None] * combo_score(pos[cand][:, None], pos[None]), NEG)
     best = jnp.argmax(pair, axis=1)
     has = jnp.any(ok, axis=1) & keep
-    s = spatial_score(sem_a[cand], pos[cand], pos[best], sigma)
+    s = spatial_score(sem_a[cand], pos[cand], pos[best], sigma) * gate(sem_b[best], anchor_threshold, gate_tau)
     scores = jnp.full((n,), NEG).at[cand].set(jnp.where(has, s, NEG))
     anchor = jnp.full((n,), -1, jnp.int32).at[cand].set(jnp.where(has, best, -1).astype(jnp.int32))
     has_anchor = jnp.zeros((n,), bool).at[cand].set(has)
@@ -124,11 +140,13 @@ def anchor_guided(
 def neighbour_mean(ctx: jax.Array, relevant: jax.Array, reach: jax.Array) -> jax.Array:
     """Mean of ctx over relevant nodes in each node's neighbourhood (0 where none).
 
-    ctx, relevant: (N,); reach: (N, N) bool with reach[i, j] = j is a neighbour of i (i itself excluded).
+    ctx, relevant: (N,) (relevant bool, or float 0/1 gates); reach: (N, N) bool with reach[i, j] = j is a
+    neighbour of i (i itself excluded).
     """
-    w = reach & relevant[None]
+    w = reach * jnp.asarray(relevant, jnp.float32)[None]
     cnt = jnp.sum(w, axis=1)
-    return jnp.where(cnt > 0, jnp.sum(jnp.where(w, ctx[None], 0.0), axis=1) / jnp.maximum(cnt, 1), 0.0)
+    vals = w * jnp.where(ctx > NEG / 2, ctx, 0.0)[None]
+    return jnp.where(cnt > 0, jnp.sum(vals, axis=1) / jnp.maximum(cnt, 1), 0.0)
 
 
 def neighbour_boost(
@@ -141,6 +159,7 @@ def neighbour_boost(
     threshold: jax.Array,
     hops: jax.Array,
     max_hops: int = 1,
+    gate_tau: jax.Array | None = None,
 ) -> tuple[jax.Array, jax.Array]:
     """Paper's S_boost = S_sem * (1 + eta * mean score of relevant neighbours).
 
@@ -148,15 +167,16 @@ def neighbour_boost(
     target's own score: true detections have supporting neighbours, isolated noise does not); a
     neighbour is relevant when ctx >= threshold. With max_hops == 1 (static) this gathers over the
     neighbour lists (memory O(N Dmax)); otherwise it builds (N, N) neighbourhoods within `hops`.
+    gate_tau: see `gate` (relevance as straight-through gates, so the threshold gets a gradient).
     Returns (boosted (N,), neighbour mean (N,)).
     """
     sem, ctx, nbr, nbr_mask, node_mask = map(jnp.asarray, (sem, ctx, nbr, nbr_mask, node_mask))
     n = sem.shape[0]
-    relevant = (ctx >= threshold) & node_mask
+    relevant = gate(ctx, threshold, gate_tau) * node_mask  # (N,) 0/1 in the forward pass
     if max_hops == 1:
         valid = nbr_mask & (nbr >= 0)
-        w = valid & relevant[jnp.maximum(nbr, 0)]
-        vals = jnp.where(w, ctx[jnp.maximum(nbr, 0)], 0.0)
+        w = valid * relevant[jnp.maximum(nbr, 0)]
+        vals = w * jnp.where(ctx > NEG / 2, ctx, 0.0)[jnp.maximum(nbr, 0)]
         cnt = jnp.sum(w, axis=1)
         mean = jnp.where(cnt > 0, jnp.sum(vals, axis=1) / jnp.maximum(cnt, 1), 0.0)
         mean = jnp.where(hops >= 1, mean, 0.0)

@@ -1,0 +1,370 @@
+"""Hyperparameter sweeps: a grid of RetrievalParams (ablation variants included) scored in one compiled call.
+
+    grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)   # P points
+    metric = retrieval_metric(batch, meta, mesh)            # (params (C,), lam (C,)) -> hits (C, G)
+    sums, stats = evaluate_grid([metric], grid, chunk_size=64, store=ChunkStore(folder, fp))
+    rows = sweep_rows(grid, [metric], sums)                  # one row per grid point and modality
+
+The grid is the product of the configured axes times the ablation variants (flags of the one kernel);
+a chunk of grid points is a RetrievalParams with a leading axis, and the metric is
+jit(vmap(correct_counts)) over it: grid points x scenes x subgoals in one call. Chunks have a fixed size
+(the last is padded), so the function compiles once. Each finished chunk can be saved with orbax
+(ChunkStore): a sweep that is killed and started again loads the finished chunks and computes only the
+rest, and its table is bit-for-bit that of an uninterrupted run (the sums are integers).
+
+Navigation metrics plug in as another GridMetric: a function of (params (C,), lam (C,)) returning per-
+modality sums (C, G) with their denominators; the planning lambda axis (sweep.axes.lam) only reaches
+metrics with uses_lam=True. Issue 8's closed-loop evaluation provides one (see README).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import hashlib
+import itertools
+import json
+import shutil
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+import jax
+import numpy as np
+
+from ragnav_jax.config import SweepAxes, SweepConfig
+from ragnav_jax.errors import ConfigError, UserError
+from ragnav_jax.evaluation import sharding
+from ragnav_jax.retrieval.evaluate import BatchMeta, RetrievalBatch, correct_counts
+from ragnav_jax.retrieval.params import ABLATIONS, RetrievalParams, ablation_params, stack_params
+
+AXES = tuple(f.name for f in dataclasses.fields(SweepAxes))  # RetrievalParams fields, then lam
+FIELDS = tuple(f.name for f in dataclasses.fields(RetrievalParams))
+
+
+@dataclasses.dataclass(frozen=True)
+class Grid:
+    """P grid points: every combination of the varied axes, for each ablation variant (variant outermost)."""
+
+    axes: dict  # varied axis name -> tuple of values, in SweepAxes order
+    variants: tuple[str, ...]
+    points: tuple[dict, ...]  # (P,) {"variant": name, axis: value, ...}
+    params: RetrievalParams  # (P,) leaves
+    lam: np.ndarray  # (P,) float32 planning lambda
+
+    @property
+    def size(self) -> int:
+        return len(self.points)
+
+    @property
+    def varied(self) -> tuple[str, ...]:
+        """RetrievalParams fields that take more than one value over the grid (at least one field)."""
+        out = tuple(f for f in FIELDS if np.unique(np.asarray(getattr(self.params, f))).size > 1)
+        return out or FIELDS[:1]
+
+    def chunk(self, lo: int, hi: int, size: int) -> tuple[RetrievalParams, np.ndarray]:
+        """Points [lo, hi) padded to `size` (last point repeated): varied fields (size,), the others scalars."""
+        varied = self.varied
+
+        def leaf(f):
+            x = np.asarray(getattr(self.params, f))
+            return sharding.pad_leading(x[lo:hi], size) if f in varied else x[0]
+
+        return RetrievalParams(**{f: leaf(f) for f in FIELDS}), sharding.pad_leading(self.lam[lo:hi], size)
+
+
+def make_grid(sweep: SweepConfig, base: RetrievalParams, lam: float = 0.0) -> Grid:
+    """The sweep's grid around `base` (the values of axes that are not varied) and planning lambda `lam`."""
+    bad = [v for v in sweep.variants if v not in ABLATIONS]
+    if bad:
+        raise ConfigError(f"config key 'sweep.variants': unknown variant(s) {', '.join(bad)} "
+                          f"(known: {', '.join(ABLATIONS)})")
+    axes = {a: tuple(getattr(sweep.axes, a)) for a in AXES if getattr(sweep.axes, a)}
+    points, plist, lams = [], [], []
+    for variant in sweep.variants:
+        vbase = ablation_params(base, variant)
+        for combo in itertools.product(*axes.values()):
+            point = dict(zip(axes, combo))
+            fields = {k: v for k, v in point.items() if k != "lam"}
+            p = vbase.replace(**{k: np.asarray(v, np.asarray(getattr(vbase, k)).dtype) for k, v in fields.items()})
+            points.append({"variant": variant, **point})
+            plist.append(p)
+            lams.append(point.get("lam", lam))
+    params = jax.tree.map(np.asarray, stack_params(plist))
+    return Grid(axes, tuple(sweep.variants), tuple(points), params, np.asarray(lams, np.float32))
+
+
+@dataclasses.dataclass(frozen=True)
+class GridMetric:
+    """A metric of a chunk of grid points computed in one batched call.
+
+    fn(params (C,), lam (C,)) -> sums (C, G) over the modalities; the table reports sums / totals.
+    """
+
+    name: str  # column of the table, e.g. "retrieval_accuracy"
+    fn: Callable
+    totals: np.ndarray  # (G,) denominators per modality (goals for retrieval, episodes for navigation)
+    modalities: tuple[str, ...]
+    fingerprint: str  # digest of the data the metric reads (checkpoints of another data set are refused)
+    uses_lam: bool = False
+
+
+def _digest(tree) -> str:
+    h = hashlib.sha256()
+    for x in jax.tree.leaves(tree):
+        x = np.asarray(x)
+        h.update(f"{x.dtype.str}{x.shape}".encode())
+        h.update(np.ascontiguousarray(x).tobytes())
+    return h.hexdigest()
+
+
+@functools.cache
+def _grid_correct(batched: tuple[str, ...]):
+    axes = RetrievalParams(**{f: (0 if f in batched else None) for f in FIELDS})
+    return jax.jit(jax.vmap(correct_counts, in_axes=(None, axes)))
+
+
+def grid_correct(batch: RetrievalBatch, params: RetrievalParams) -> jax.Array:
+    """Top-1 hits per modality (P, G) for a grid of params: one compiled call, vmapped over the grid.
+
+    Fields with a leading axis (P,) are the varied ones; scalar fields are shared by every point, so
+    vmap leaves everything that depends on them alone unbatched (a sigma x eta grid recomputes only
+    the spatial and boosting terms per point). One compile per set of varied fields.
+    """
+    batched = tuple(f for f in FIELDS if np.ndim(getattr(params, f)) == 1)
+    return _grid_correct(batched)(batch, params)
+
+
+def retrieval_metric(batch: RetrievalBatch, meta: BatchMeta, mesh=None) -> GridMetric:
+    """Retrieval accuracy (instance-level top-1, retrieval/evaluate.py's rule) as a GridMetric.
+
+    With a mesh the batch is replicated on every device and each chunk's grid points are split over them.
+    """
+    fp = _digest(batch)
+    if mesh is not None:
+        batch = sharding.replicate(batch, mesh)
+    return GridMetric("retrieval_accuracy", lambda params, lam: grid_correct(batch, params), meta.totals,
+                      meta.modalities, fp)
+
+
+class ChunkStore:
+    """Finished chunks of one sweep as orbax checkpoints (step = chunk index) under `folder`.
+
+    sweep.json beside them records the sweep's fingerprint (grid, chunking, data); a folder holding
+    another sweep's chunks is refused unless fresh=True, which clears it.
+    """
+
+    def __init__(self, folder: str | Path, fingerprint: str, fresh: bool = False):
+        import orbax.checkpoint as ocp
+
+        self.folder = Path(folder).resolve()
+        tag = self.folder / "sweep.json"
+        if fresh and self.folder.exists():
+            shutil.rmtree(self.folder)
+        if tag.exists():
+            try:
+                old = json.loads(tag.read_text()).get("fingerprint")
+            except (OSError, json.JSONDecodeError):
+                old = None
+            if old != fingerprint:
+                raise UserError(f"{self.folder}: holds checkpoints of a different sweep (grid, chunk size or data "
+                                "changed); pass --fresh to discard them or choose another --out")
+        self.folder.mkdir(parents=True, exist_ok=True)
+        tag.write_text(json.dumps({"fingerprint": fingerprint}) + "\n")
+        self._ocp = ocp
+        self.manager = ocp.CheckpointManager(
+            self.folder / "chunks",
+            options=ocp.CheckpointManagerOptions(max_to_keep=None, enable_async_checkpointing=False, create=True,
+                                                 cleanup_tmp_directories=True),
+        )
+
+    def done(self) -> list[int]:
+        return sorted(self.manager.all_steps())
+
+    def load(self, i: int) -> dict[str, np.ndarray]:
+        out = self.manager.restore(i, args=self._ocp.args.StandardRestore())
+        return {k: np.asarray(v) for k, v in out.items()}
+
+    def save(self, i: int, sums: dict[str, np.ndarray]) -> None:
+        self.manager.save(i, args=self._ocp.args.StandardSave({k: np.asarray(v) for k, v in sums.items()}))
+        self.manager.wait_until_finished()
+
+    def close(self) -> None:
+        self.manager.close()
+
+
+def sweep_fingerprint(grid: Grid, metrics: Sequence[GridMetric], chunk: int) -> str:
+    h = hashlib.sha256()
+    h.update(_digest((grid.params, grid.lam)).encode())
+    h.update(f"{chunk}|{[m.name for m in metrics]}|{[m.fingerprint for m in metrics]}".encode())
+    return h.hexdigest()
+
+
+def chunk_shape(grid_size: int, chunk_size: int, mesh=None) -> int:
+    """Grid points per compiled call: chunk_size (at most the grid) rounded up to a multiple of the devices."""
+    n = mesh.size if mesh is not None else 1
+    c = min(chunk_size, max(grid_size, 1))
+    return -(-c // n) * n
+
+
+def evaluate_grid(
+    metrics: Sequence[GridMetric], grid: Grid, chunk_size: int, mesh=None, store: ChunkStore | None = None,
+    pause_s: float = 0.0, progress: bool = False, log: Callable[[str], None] | None = None,
+) -> tuple[dict[str, np.ndarray], dict]:
+    """Every metric at every grid point, chunk by chunk; returns ({name: sums (P, G)}, stats).
+
+    Chunks already in `store` are loaded, not recomputed; each computed chunk is saved before the next.
+    Timing is host-side, around the calls (the first computed chunk includes compilation).
+    """
+    C = chunk_shape(grid.size, chunk_size, mesh)
+    n_chunks = -(-grid.size // C)
+    done = set(store.done()) if store is not None else set()
+    done &= set(range(n_chunks))
+    if done and log:
+        log(f"resuming: {len(done)} of {n_chunks} chunks already done in {store.folder}")
+    parts: dict[int, dict[str, np.ndarray]] = {}
+    times = []
+    it = range(n_chunks)
+    if progress:
+        from tqdm.auto import tqdm
+
+        it = tqdm(it, desc="sweep", unit="chunk")
+    for i in it:
+        if i in done:
+            parts[i] = store.load(i)
+            continue
+        lo, hi = i * C, min((i + 1) * C, grid.size)
+        params, lam = grid.chunk(lo, hi, C)  # fixed chunk shape: one compile
+        if mesh is not None:
+            params = jax.tree.map(lambda x: sharding.shard_leading(x, mesh) if np.ndim(x) else
+                                  sharding.replicate(x, mesh), params)
+            lam = sharding.shard_leading(lam, mesh)
+        t0 = time.perf_counter()
+        out = {m.name: m.fn(params, lam) for m in metrics}
+        out = {k: sharding.to_host(v)[: hi - lo] for k, v in out.items()}
+        times.append(time.perf_counter() - t0)
+        parts[i] = out
+        if store is not None:
+            store.save(i, out)
+        if pause_s:
+            time.sleep(pause_s)
+    sums = {m.name: np.concatenate([parts[i][m.name] for i in range(n_chunks)]) for m in metrics}
+    stats = {
+        "grid_points": grid.size, "chunk_size": C, "chunks": n_chunks, "chunks_resumed": len(done),
+        "chunks_computed": len(times), "first_chunk_s": round(times[0], 4) if times else None,
+        "later_chunks_s": round(float(np.median(times[1:])), 4) if len(times) > 1 else None,
+        "devices": mesh.size if mesh is not None else 1,
+    }
+    return sums, stats
+
+
+def sweep_rows(grid: Grid, metrics: Sequence[GridMetric], sums: dict[str, np.ndarray]) -> list[dict]:
+    """The tidy table: one row per grid point and modality (plus "all"), each metric as sum / total."""
+    mods = metrics[0].modalities
+    rows = []
+    for p, point in enumerate(grid.points):
+        for g, mod in enumerate((*mods, "all")):
+            row = {"point": p, **point, "modality": mod}
+            for m in metrics:
+                num = sums[m.name][p].sum() if mod == "all" else sums[m.name][p, g]
+                den = m.totals.sum() if mod == "all" else m.totals[g]
+                row[m.name] = round(float(num) / float(den), 6) if den else 0.0
+                row[f"{m.name}_n"] = int(den)
+            rows.append(row)
+    return rows
+
+
+def best_points(rows: list[dict], metric: str = "retrieval_accuracy") -> dict[str, dict]:
+    """Per variant, the grid point with the best metric over all modalities (first on ties)."""
+    best: dict[str, dict] = {}
+    for r in rows:
+        if r["modality"] == "all" and (r["variant"] not in best or r[metric] > best[r["variant"]][metric]):
+            best[r["variant"]] = r
+    return best
+
+
+def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
+                  metric: str = "retrieval_accuracy") -> list[Path]:
+    """One PNG per variant: `metric` over axes (x, y), a panel per modality; other axes at their best value."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import pandas as pd
+
+    df = pd.DataFrame(rows)
+    x, y = axes
+    if x not in df or y not in df:
+        return []
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    out = []
+    mods = list(dict.fromkeys(df["modality"]))
+    for variant, dv in df.groupby("variant", sort=False):
+        fig, axs = plt.subplots(1, len(mods), figsize=(3.6 * len(mods), 3.2), squeeze=False)
+        for ax, mod in zip(axs[0], mods):
+            piv = dv[dv["modality"] == mod].pivot_table(index=y, columns=x, values=metric, aggfunc="max")
+            im = ax.imshow(piv.values, origin="lower", vmin=0.0, vmax=1.0, cmap="viridis", aspect="auto")
+            ax.set_xticks(range(len(piv.columns)), [f"{v:g}" for v in piv.columns], rotation=90, fontsize=7)
+            ax.set_yticks(range(len(piv.index)), [f"{v:g}" for v in piv.index], fontsize=7)
+            ax.set_xlabel(x)
+            ax.set_ylabel(y)
+            ax.set_title(mod, fontsize=9)
+            for (i, j), v in np.ndenumerate(piv.values):
+                if piv.shape[0] * piv.shape[1] <= 36:
+                    ax.text(j, i, f"{v:.2f}", ha="center", va="center", fontsize=6, color="w")
+        fig.colorbar(im, ax=axs[0].tolist(), shrink=0.8, label=metric)
+        fig.suptitle(f"{variant}: {metric} over {x} x {y}", fontsize=10)
+        path = folder / f"{variant}_{x}_{y}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        out.append(path)
+    return out
+
+
+def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | None = None, fresh: bool = False,
+              progress: bool = False, log: Callable[[str], None] | None = None,
+              extra_metrics: Sequence[GridMetric] = ()) -> tuple[list[dict], dict]:
+    """The configured sweep over one retrieval batch; with `out`, checkpoints, table, heatmaps and summary.
+
+    extra_metrics: more GridMetrics (navigation, issue 8) evaluated in the same chunks.
+    Returns (rows, summary).
+    """
+    from ragnav_jax.retrieval.params import params_from_config
+
+    grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)
+    if "lam" in grid.axes and not any(m.uses_lam for m in extra_metrics):
+        raise UserError("sweep.axes.lam: the planning lambda only changes navigation metrics (ragnav eval, "
+                        "issue 8, not available yet); retrieval accuracy does not depend on it")
+    if batch is None:
+        raise UserError("no instruction of the episodes file yields a subgoal: nothing to sweep")
+    mesh = sharding.batch_mesh() if cfg.sweep.shard and jax.device_count() > 1 else None
+    metrics = [retrieval_metric(batch, meta, mesh), *extra_metrics]
+    store = None
+    if out is not None and cfg.sweep.checkpoint:
+        C = chunk_shape(grid.size, cfg.sweep.chunk_size, mesh)
+        store = ChunkStore(Path(out) / "checkpoints", sweep_fingerprint(grid, metrics, C), fresh=fresh)
+    t0 = time.perf_counter()
+    try:
+        sums, stats = evaluate_grid(metrics, grid, cfg.sweep.chunk_size, mesh, store, cfg.sweep.pause_s, progress,
+                                    log)
+    finally:
+        if store is not None:
+            store.close()
+    stats["wall_s"] = round(time.perf_counter() - t0, 3)
+    rows = sweep_rows(grid, metrics, sums)
+    best = best_points(rows)
+    summary = {
+        "axes": {k: list(v) for k, v in grid.axes.items()}, "variants": list(grid.variants),
+        "modalities": list(meta.modalities), "queries": int(meta.totals.sum()),
+        "best": {v: {k: r[k] for k in ("point", *grid.axes, "retrieval_accuracy")} for v, r in best.items()},
+        **stats,
+    }
+    if out is not None:
+        from ragnav_jax.tables import write_table
+
+        out = Path(out)
+        write_table(rows, out / "sweep")
+        summary["heatmaps"] = [str(p) for p in plot_heatmaps(rows, cfg.sweep.heatmap, out / "heatmaps")]
+        (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    return rows, summary
