@@ -33,7 +33,7 @@ def unit(x):
 
 
 def synthetic_index(n: int, d: int, m: int, deg: int, rng) -> RetrievalIndex:
-    """A memory of n key poses on a jittered grid, `deg` nearest grid neighbours, a 2-level forest."""
+    """A memory of n key poses on a jittered grid, `deg` nearest grid neighbours, n/2 instances, a 2-level forest."""
     side = int(np.ceil(np.sqrt(n)))
     xy = np.stack(np.unravel_index(np.arange(n), (side, side)), -1).astype(np.float32) * 1.5
     pos = np.concatenate([xy + rng.uniform(-0.2, 0.2, xy.shape), np.zeros((n, 1))], 1).astype(np.float32)
@@ -49,6 +49,7 @@ def synthetic_index(n: int, d: int, m: int, deg: int, rng) -> RetrievalIndex:
     leaf0 = (np.arange(n) * C // n).astype(np.int32)
     par0 = (np.arange(C) * max(C // 4, 1) // C).astype(np.int32)
     emb = unit(rng.normal(size=(n, d))).astype(np.float32)
+    n_inst = max(n // 2, 1)  # about one object instance per two key poses, each seen from m of them
     cl = np.zeros((2, C, d), np.float32)
     cl[0] = unit(rng.normal(size=(C, d)))
     cl[1] = unit(rng.normal(size=(C, d)))
@@ -57,10 +58,13 @@ def synthetic_index(n: int, d: int, m: int, deg: int, rng) -> RetrievalIndex:
     cmask[1, : max(C // 4, 1)] = True
     return RetrievalIndex(
         node_emb=jnp.asarray(emb), node_pos=jnp.asarray(pos), node_mask=jnp.ones(n, bool), nbr=jnp.asarray(nbr),
-        nbr_mask=jnp.asarray(nbr >= 0), slot_emb=jnp.asarray(unit(rng.normal(size=(n, m, d))).astype(np.float32)),
-        slot_pos=jnp.asarray(np.repeat(pos[:, None], m, 1)), slot_sensors=jnp.asarray(rng.uniform(0, 60, (n, m, 3)).astype(np.float32)),
-        slot_sensor_mask=jnp.asarray(rng.uniform(size=(n, m, 3)) < 0.3), slot_mask=jnp.ones((n, m), bool),
-        cluster_emb=jnp.asarray(cl), cluster_mask=jnp.asarray(cmask),
+        nbr_mask=jnp.asarray(nbr >= 0),
+        inst_emb=jnp.asarray(unit(rng.normal(size=(n_inst, 2, d))).astype(np.float32)),
+        inst_phrase_mask=jnp.asarray(rng.uniform(size=(n_inst, 2)) < 0.8).at[:, 0].set(True),
+        inst_pos=jnp.asarray(pos[rng.integers(0, n, n_inst)]), inst_sensors=jnp.asarray(rng.uniform(0, 60, (n_inst, 3)).astype(np.float32)),
+        inst_sensor_mask=jnp.asarray(rng.uniform(size=(n_inst, 3)) < 0.3), inst_mask=jnp.ones(n_inst, bool),
+        slot_inst=jnp.asarray(rng.integers(0, n_inst, (n, m)).astype(np.int32)), slot_mask=jnp.ones((n, m), bool),
+        cluster_emb=jnp.asarray(cl), cluster_label_emb=jnp.asarray(cl), cluster_mask=jnp.asarray(cmask),
         cluster_parent=jnp.asarray(np.stack([par0, np.full(C, -1, np.int32)])),
         leaf_cluster=jnp.asarray(np.stack([leaf0, par0[leaf0]], 1)),
     )

@@ -314,7 +314,7 @@ class RetrievalConfig:
     top_k: int = 8  # anchor-guided recall size K (<= 16)
     hops: int = 2  # anchor validation neighbourhood, hops (<= 3)
     boost_hops: int = 1
-    beam: int = 3  # forest beam width per level (<= 8)
+    beam: int = 8  # forest beam width per level (<= 8) when a room phrase locks a region
     anchor_threshold: float = 0.45
     boost_threshold: float = 0.45
     w_slot: float = 0.7  # instance phrase vs node fingerprint
@@ -322,6 +322,8 @@ class RetrievalConfig:
     sigma_loc: float = 1.5  # metres, location hint Gaussian width
     w_loc: float = 1.0
     w_sensor: float = 1.0
+    w_room: float = 1.0  # soft room term from the forest's summary labels (0: off)
+    tau_room: float = 0.05
 
     def __post_init__(self):
         _check(self.sigma > 0 and self.sigma_loc > 0, "retrieval.sigma", "sigma and sigma_loc must be > 0")

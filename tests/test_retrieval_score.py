@@ -18,52 +18,61 @@ def unit(v):
     return (v / np.linalg.norm(v)).astype(np.float32)
 
 
-# Six key poses in a row, 1.5 m apart, a chain graph. Each sees up to two instances.
-SLOTS = [
-    [unit(SOFA + 0.5 * RED), unit(REMOTE)],  # 0: red sofa + remote (remote next to the sofa)
-    [unit(PLANT), unit(LAMP)],  # 1: plant A at x=1.5
-    [unit(RADIATOR), None],  # 2: radiator 40 C
-    [unit(REMOTE), unit(TV)],  # 3: a remote far from any sofa
-    [unit(SOFA + 0.5 * BLUE), None],  # 4: blue sofa
-    [unit(PLANT), unit(RADIATOR)],  # 5: plant B at x=7.5, radiator 60 C
+# Eight object instances; six key poses in a row, 1.5 m apart, a chain graph, each describing up to two.
+INSTANCES = [  # (phrase embeddings, position, temperature or None)
+    ([unit(SOFA + 0.5 * RED)], (0.3, 0.5), None),  # 0 red sofa
+    ([unit(REMOTE)], (0.4, 0.6), None),  # 1 remote next to the sofa
+    ([unit(PLANT)], (1.8, 0.5), None),  # 2 plant A
+    ([unit(LAMP)], (1.9, 0.6), None),  # 3 lamp
+    ([unit(RADIATOR)], (3.3, 0.5), 40.0),  # 4 radiator 40 C
+    ([unit(REMOTE)], (4.8, 0.5), None),  # 5 a remote far from any sofa
+    ([unit(TV)], (4.9, 0.6), None),  # 6 TV
+    ([unit(SOFA + 0.5 * BLUE)], (6.3, 0.5), None),  # 7 blue sofa
+    ([unit(PLANT)], (7.8, 0.5), None),  # 8 plant B
+    ([unit(RADIATOR), unit(RADIATOR + 0.2 * BLUE)], (7.9, 0.6), 60.0),  # 9 radiator 60 C, seen twice
 ]
-TEMPS = {(2, 0): 40.0, (5, 1): 60.0}
+SLOTS = [[0, 1], [2, 3], [4], [5, 6], [7], [8, 9]]
 
 
 def make_index():
-    n, m = 6, 2
-    slot_emb = np.zeros((n, m, D), np.float32)
-    slot_mask = np.zeros((n, m), bool)
+    n, m, I, P = 6, 2, len(INSTANCES), 2
+    inst_emb = np.zeros((I, P, D), np.float32)
+    inst_pmask = np.zeros((I, P), bool)
+    inst_pos = np.zeros((I, 3), np.float32)
+    sensors = np.zeros((I, 1), np.float32)
+    smask = np.zeros((I, 1), bool)
+    for c, (phr, xy, temp) in enumerate(INSTANCES):
+        for k, e in enumerate(phr):
+            inst_emb[c, k], inst_pmask[c, k] = e, True
+        inst_pos[c, :2] = xy
+        if temp is not None:
+            sensors[c, 0], smask[c, 0] = temp, True
+    slot_inst = np.full((n, m), -1, np.int32)
     for i, row in enumerate(SLOTS):
-        for j, e in enumerate(row):
-            if e is not None:
-                slot_emb[i, j], slot_mask[i, j] = e, True
-    node_emb = np.stack([unit(slot_emb[i].sum(0)) for i in range(n)])
+        slot_inst[i, : len(row)] = row
+    node_emb = np.stack([unit(sum(inst_emb[c, 0] for c in row)) for row in SLOTS])
     pos = np.stack([np.array([1.5 * i, 0.0, 0.0]) for i in range(n)]).astype(np.float32)
-    slot_pos = np.repeat(pos[:, None], m, 1) + np.array([0.3, 0.5, 0.0], np.float32)
-    sensors = np.zeros((n, m, 1), np.float32)
-    smask = np.zeros((n, m, 1), bool)
-    for (i, j), t in TEMPS.items():
-        sensors[i, j, 0], smask[i, j, 0] = t, True
     nbr = np.full((n, 2), -1, np.int32)
     for i in range(n):
         nb = [k for k in (i - 1, i + 1) if 0 <= k < n]
         nbr[i, : len(nb)] = nb
     return RetrievalIndex(
         node_emb=jnp.asarray(node_emb), node_pos=jnp.asarray(pos), node_mask=jnp.ones(n, bool),
-        nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), slot_emb=jnp.asarray(slot_emb),
-        slot_pos=jnp.asarray(slot_pos), slot_sensors=jnp.asarray(sensors), slot_sensor_mask=jnp.asarray(smask),
-        slot_mask=jnp.asarray(slot_mask), cluster_emb=jnp.ones((1, 1, D)), cluster_mask=jnp.ones((1, 1), bool),
-        cluster_parent=-jnp.ones((1, 1), jnp.int32), leaf_cluster=jnp.zeros((n, 1), jnp.int32),
+        nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), inst_emb=jnp.asarray(inst_emb),
+        inst_phrase_mask=jnp.asarray(inst_pmask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(sensors),
+        inst_sensor_mask=jnp.asarray(smask), inst_mask=jnp.ones(I, bool), slot_inst=jnp.asarray(slot_inst),
+        slot_mask=jnp.asarray(slot_inst >= 0), cluster_emb=jnp.ones((1, 1, D)), cluster_label_emb=jnp.ones((1, 1, D)),
+        cluster_mask=jnp.ones((1, 1), bool), cluster_parent=-jnp.ones((1, 1), jnp.int32),
+        leaf_cluster=jnp.zeros((n, 1), jnp.int32),
     )
 
 
-def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0):
+def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0, room=None):
     z = np.zeros(D, np.float32)
     return QueryArrays(
         target=jnp.asarray(target), head=jnp.asarray(head if head is not None else target),
         anchor=jnp.asarray(anchor if anchor is not None else z), has_anchor=jnp.asarray(anchor is not None),
-        room=jnp.asarray(z), has_room=jnp.asarray(False),
+        room=jnp.asarray(room if room is not None else z), has_room=jnp.asarray(room is not None),
         hint=jnp.asarray(hint if hint is not None else [0.0, 0.0], jnp.float32), has_hint=jnp.asarray(hint is not None),
         sensor_channel=jnp.int32(0), sensor_op=jnp.int32(op), sensor_value=jnp.float32(value),
         sensor_scale=jnp.float32(scale),
@@ -86,7 +95,7 @@ def test_attributes_pick_the_instance():
 
 
 def test_location_hint_disambiguates_identical_instances():
-    # Plant A at x = 1.5 + 0.3, plant B at x = 7.5 + 0.3 (both at y = 0.5).
+    # Plant A at x = 1.8, plant B at x = 7.8 (both at y = 0.5).
     assert best(query(unit(PLANT), hint=[1.8, 0.5]))[0] == 1
     i, _, expl = best(query(unit(PLANT), hint=[7.8, 0.5]))
     assert i == 5 and float(expl["loc"][5]) > 0.99
@@ -132,3 +141,28 @@ def test_sigma_grid_without_recompiling():
     for sigma in (0.5, 1.0, 3.0):
         f(IDX, q, P.replace(sigma=jnp.float32(sigma)))
     assert f._cache_size() == 1
+
+
+def test_room_term_prefers_the_matching_region():
+    # Two forest clusters: nodes 0-2 labelled like the query room, nodes 3-5 not.
+    room_a, room_b = unit(RED + BLUE), unit(TV + LAMP)
+    idx = IDX.replace(
+        cluster_emb=jnp.stack([jnp.asarray(room_a), jnp.asarray(room_b)])[None],
+        cluster_label_emb=jnp.stack([jnp.asarray(room_a), jnp.asarray(room_b)])[None],
+        cluster_mask=jnp.ones((1, 2), bool), cluster_parent=-jnp.ones((1, 2), jnp.int32),
+        leaf_cluster=jnp.array([[0], [0], [0], [1], [1], [1]], jnp.int32),
+    )
+    s, expl = score(idx, query(unit(PLANT), room=room_b), P)
+    assert int(jnp.argmax(s)) == 5 and float(expl["room"][5]) == 1.0 and float(expl["room"][1]) < 0.01
+    s, _ = score(idx, query(unit(PLANT), room=room_a), P)
+    assert int(jnp.argmax(s)) == 1
+    # The labels belong to the forest: without it the room phrase cannot be used (a tie on semantics).
+    _, expl = score(idx, query(unit(PLANT), room=room_a), ablation_params(P, "no_forest"))
+    assert bool(jnp.all(expl["room"] == 1.0))
+
+
+def test_pooled_phrases_recover_an_attribute_seen_once():
+    # Radiator 9 was once described as a blueish radiator; the 40 C one never was.
+    p = P.replace(w_slot=jnp.float32(1.0))  # instance evidence only (node 5's fingerprint also has a plant)
+    assert best(query(unit(RADIATOR + 0.2 * BLUE), RADIATOR), p)[0] == 5
+    assert best(query(unit(RADIATOR), RADIATOR), p)[0] == 2

@@ -54,65 +54,107 @@ def _ancestors(mem: DualBasisMemory, n_pad: int, levels: int) -> np.ndarray:
     return out
 
 
+ASSOCIATION_RADIUS = 0.15  # metres (3-D): detections closer than this are the same instance
+
+
+def associate(positions: np.ndarray) -> np.ndarray:
+    """Greedy data association of detections by estimated 3-D position: (K, 3) -> (K,) instance ids."""
+    centres: list[np.ndarray] = []
+    out = np.zeros(len(positions), np.int32)
+    for k, p in enumerate(positions):
+        for c, q in enumerate(centres):
+            if np.linalg.norm(p - q) < ASSOCIATION_RADIUS:
+                out[k] = c
+                break
+        else:
+            out[k] = len(centres)
+            centres.append(p)
+    return out
+
+
 def build_scene_index(
     mem: DualBasisMemory, meta: MemoryMeta, scene: Scene, embedder, max_slots: int, max_degree: int,
+    max_instances: int | None = None, max_phrases: int = 8,
 ) -> tuple[RetrievalIndex, IndexMeta]:
-    """One scene's RetrievalIndex (padded to the memory's N, max_slots, max_degree)."""
+    """One scene's RetrievalIndex (padded to the memory's N, max_slots, max_degree, max_instances)."""
     n_pad = int(mem.node_mask.shape[0])
     n = meta.num_nodes
     L = n_pad and int(mem.tree_level.shape[0]) // n_pad
     sensor_names = tuple(meta.sensor_names)
     S = max(len(sensor_names), 1)
     objs, phrases = node_slots(meta, scene)
-    flat = sorted({p for ps in phrases for p in ps})
-    vec = dict(zip(flat, embedder.embed(flat))) if flat else {}
     D = int(mem.embedding.shape[-1])
-    slot_emb = np.zeros((n_pad, max_slots, D), np.float32)
-    slot_pos = np.zeros((n_pad, max_slots, 3), np.float32)
-    slot_sens = np.zeros((n_pad, max_slots, S), np.float32)
-    slot_smask = np.zeros((n_pad, max_slots, S), bool)
-    slot_mask = np.zeros((n_pad, max_slots), bool)
-    for i in range(n):
-        for j, (oi, ph) in enumerate(list(zip(objs[i], phrases[i]))[:max_slots]):
-            o = scene.objects[oi]
-            slot_emb[i, j], slot_pos[i, j], slot_mask[i, j] = vec[ph], o.position, True
-            for k, v in o.sensors:
-                if k in sensor_names:
-                    slot_sens[i, j, sensor_names.index(k)] = v
-                    slot_smask[i, j, sensor_names.index(k)] = True
+    # Detections (node, slot) -> instances by estimated position (exact here: noiseless odometry).
+    dets = [(i, j, oi, ph) for i in range(n) for j, (oi, ph) in enumerate(list(zip(objs[i], phrases[i]))[:max_slots])]
+    det_pos = np.array([scene.objects[oi].position for _, _, oi, _ in dets], np.float32).reshape(-1, 3)
+    inst_of = associate(det_pos)
+    n_inst = int(inst_of.max()) + 1 if len(dets) else 0
+    I = max(max_instances or n_inst, n_inst, 1)
+    inst_phr: list[list[str]] = [[] for _ in range(n_inst)]
+    inst_obj = [-1] * n_inst
+    slot_inst = np.full((n_pad, max_slots), -1, np.int32)
+    for (i, j, oi, ph), c in zip(dets, inst_of):
+        slot_inst[i, j] = c
+        inst_obj[c] = oi
+        if ph not in inst_phr[c] and len(inst_phr[c]) < max_phrases:
+            inst_phr[c].append(ph)
+    flat = sorted({p for ps in inst_phr for p in ps})
+    vec = dict(zip(flat, embedder.embed(flat))) if flat else {}
+    inst_emb = np.zeros((I, max_phrases, D), np.float32)
+    inst_pmask = np.zeros((I, max_phrases), bool)
+    inst_pos = np.zeros((I, 3), np.float32)
+    inst_sens = np.zeros((I, S), np.float32)
+    inst_smask = np.zeros((I, S), bool)
+    inst_mask = np.zeros((I,), bool)
+    for c in range(n_inst):
+        for k, ph in enumerate(inst_phr[c]):
+            inst_emb[c, k], inst_pmask[c, k] = vec[ph], True
+        o = scene.objects[inst_obj[c]]
+        inst_pos[c], inst_mask[c] = det_pos[np.flatnonzero(inst_of == c)].mean(0), True
+        for key, v in o.sensors:
+            if key in sensor_names:
+                inst_sens[c, sensor_names.index(key)], inst_smask[c, sensor_names.index(key)] = v, True
     adj = np.asarray(mem.adjacency)
     nbr = np.full((n_pad, max_degree), -1, np.int32)
     for i in range(n_pad):
         nb = np.flatnonzero(adj[i])[:max_degree]
         nbr[i, : len(nb)] = nb
-    # Forest levels above the leaves; cluster embeddings blend the mean fingerprint with the summary label.
+    # Forest levels above the leaves; cluster embeddings blend the mean fingerprint with the summary label;
+    # label embeddings alone (the inferred area type before ':') drive the soft room term.
     tree_emb = np.asarray(mem.tree_embedding)
     labels = list(meta.tree_labels)
-    lab_texts = sorted({labels[s] for s in range(n_pad, L * n_pad) if labels[s]})
-    lab_vec = dict(zip(lab_texts, embedder.embed(lab_texts))) if lab_texts else {}
+    area = [lab.split(":", 1)[0].strip() for lab in labels]
+    texts = sorted({t for s_ in range(n_pad, L * n_pad) for t in (labels[s_], area[s_]) if t})
+    tvec = dict(zip(texts, embedder.embed(texts))) if texts else {}
     Lc = max(L - 1, 1)
     cluster_emb = np.zeros((Lc, n_pad, D), np.float32)
+    cluster_label = np.zeros((Lc, n_pad, D), np.float32)
     cluster_mask = np.zeros((Lc, n_pad), bool)
     cluster_parent = np.full((Lc, n_pad), -1, np.int32)
     tmask, tparent = np.asarray(mem.tree_mask), np.asarray(mem.tree_parent)
     for lvl in range(1, L):
         for k in range(n_pad):
-            s = lvl * n_pad + k
-            if not tmask[s]:
+            s_ = lvl * n_pad + k
+            if not tmask[s_]:
                 continue
-            e = tree_emb[s] + (lab_vec[labels[s]] if labels[s] in lab_vec else 0.0)
+            e = tree_emb[s_] + (tvec[labels[s_]] if labels[s_] in tvec else 0.0)
             cluster_emb[lvl - 1, k] = e / max(np.linalg.norm(e), 1e-12)
+            if area[s_] in tvec:
+                cluster_label[lvl - 1, k] = tvec[area[s_]]
             cluster_mask[lvl - 1, k] = True
-            if tparent[s] >= 0 and lvl + 1 < L:
-                cluster_parent[lvl - 1, k] = tparent[s] - (lvl + 1) * n_pad
+            if tparent[s_] >= 0 and lvl + 1 < L:
+                cluster_parent[lvl - 1, k] = tparent[s_] - (lvl + 1) * n_pad
     if L <= 1:  # no forest levels: one cluster holding everything
         cluster_emb[0, 0], cluster_mask[0, 0] = 1.0, True
     leaf_cluster = _ancestors(mem, n_pad, L) if L > 1 else np.where(np.asarray(mem.node_mask), 0, -1)[:, None].astype(np.int32)
+    slot_mask = slot_inst >= 0
     index = RetrievalIndex(
         node_emb=mem.embedding, node_pos=mem.position, node_mask=mem.node_mask & jnp.asarray(slot_mask.any(1)),
-        nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), slot_emb=jnp.asarray(slot_emb),
-        slot_pos=jnp.asarray(slot_pos), slot_sensors=jnp.asarray(slot_sens), slot_sensor_mask=jnp.asarray(slot_smask),
-        slot_mask=jnp.asarray(slot_mask), cluster_emb=jnp.asarray(cluster_emb), cluster_mask=jnp.asarray(cluster_mask),
+        nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), inst_emb=jnp.asarray(inst_emb),
+        inst_phrase_mask=jnp.asarray(inst_pmask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(inst_sens),
+        inst_sensor_mask=jnp.asarray(inst_smask), inst_mask=jnp.asarray(inst_mask), slot_inst=jnp.asarray(slot_inst),
+        slot_mask=jnp.asarray(slot_mask), cluster_emb=jnp.asarray(cluster_emb),
+        cluster_label_emb=jnp.asarray(cluster_label), cluster_mask=jnp.asarray(cluster_mask),
         cluster_parent=jnp.asarray(cluster_parent), leaf_cluster=jnp.asarray(leaf_cluster),
     )
     obs = np.asarray(mem.obs_object)
@@ -120,6 +162,12 @@ def build_scene_index(
     meta_out = IndexMeta(scene.name, n, tuple(tuple(o[:max_slots]) for o in objs),
                          tuple(tuple(p[:max_slots]) for p in phrases), observed, sensor_names)
     return index, meta_out
+
+
+def count_instances(meta: MemoryMeta, scene: Scene, max_slots: int) -> int:
+    objs, _ = node_slots(meta, scene)
+    pos = np.array([scene.objects[oi].position for o in objs for oi in o[:max_slots]], np.float32).reshape(-1, 3)
+    return int(associate(pos).max()) + 1 if len(pos) else 1
 
 
 def build_bank_index(bank: MemoryBank, scenes: Sequence[Scene], embedder, max_slots: int | None = None):
@@ -137,10 +185,11 @@ def build_bank_index(bank: MemoryBank, scenes: Sequence[Scene], embedder, max_sl
     if max_slots is None:
         max_slots = max(max((len(o) for o in node_slots(m, by_name[m.scene])[0]), default=1) for m in bank.metas)
         max_slots = max(max_slots, 1)
+    max_inst = max(count_instances(m, by_name[m.scene], max_slots) for m in bank.metas)
     out, metas = [], []
     for b, meta in enumerate(bank.metas):
         mem = jax.tree.map(lambda x: x[b], bank.memory)
-        idx, im = build_scene_index(mem, meta, by_name[meta.scene], embedder, max_slots, max_degree)
+        idx, im = build_scene_index(mem, meta, by_name[meta.scene], embedder, max_slots, max_degree, max_inst)
         out.append(idx)
         metas.append(im)
     return jax.tree.map(lambda *xs: jnp.stack(xs), *out), tuple(metas)

@@ -26,6 +26,8 @@ class RetrievalParams:
     sigma_loc: jnp.ndarray  # metres, width of the location-hint Gaussian
     w_loc: jnp.ndarray  # exponent of the location term (0 ignores hints)
     w_sensor: jnp.ndarray  # exponent of the sensor term (0 ignores sensor constraints)
+    w_room: jnp.ndarray  # 1: soft room constraint from the forest's summary labels; 0: off
+    tau_room: jnp.ndarray  # softness of the room term (similarity units)
     use_forest: jnp.ndarray  # 1: hierarchical pruning; 0: flat scoring of all nodes ("w/o semantic forest")
     use_topology: jnp.ndarray  # 1: anchor validation and boosting over G_t; 0: neither ("w/o topological map")
     use_spatial: jnp.ndarray  # 1: anchor-guided spatial term ("w/o spatial enhancement" at 0)
@@ -45,8 +47,8 @@ class RetrievalParams:
 
 INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
 DEFAULTS = dict(
-    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=3, anchor_threshold=0.45, boost_threshold=0.45,
-    w_slot=0.7, match_threshold=0.6, sigma_loc=1.5, w_loc=1.0, w_sensor=1.0,
+    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=8, anchor_threshold=0.45, boost_threshold=0.45,
+    w_slot=0.7, match_threshold=0.6, sigma_loc=1.5, w_loc=1.0, w_sensor=1.0, w_room=1.0, tau_room=0.05,
     use_forest=1.0, use_topology=1.0, use_spatial=1.0, use_boost=1.0,
 )
 # Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).
