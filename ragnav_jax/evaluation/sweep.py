@@ -1,20 +1,21 @@
 """Hyperparameter sweeps: a grid of RetrievalParams (ablation variants included) scored in one compiled call.
 
-    grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)   # P points
-    metric = retrieval_metric(batch, meta, mesh)            # (params (C,), lam (C,)) -> hits (C, G)
-    sums, stats = evaluate_grid([metric], grid, chunk_size=64, store=ChunkStore(folder, fp))
+    grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)   # P = V x K points
+    metric = retrieval_metric(batch, meta, grid, mesh)      # chunk of params -> hits (V, C, G)
+    sums, stats = evaluate_grid([metric], grid, chunk_size=100, store=ChunkStore(folder, fp))
     rows = sweep_rows(grid, [metric], sums)                  # one row per grid point and modality
 
-The grid is the product of the configured axes times the ablation variants (flags of the one kernel);
-a chunk of grid points is a RetrievalParams with a leading axis, and the metric is
-jit(vmap(correct_counts)) over it: grid points x scenes x subgoals in one call. Chunks have a fixed size
-(the last is padded), so the function compiles once. Each finished chunk can be saved with orbax
+The grid is the product of the configured axes (K combinations) for each ablation variant (V flags of
+the one kernel). A chunk is every variant at C combinations, evaluated as a nested vmap (variants x
+combinations x scenes x subgoals) in one jitted call; the vmaps map only the fields that vary, so
+what does not depend on the swept axes is computed once per variant. Chunks have a fixed size (the
+last is padded), so the function compiles once. Each finished chunk can be saved with orbax
 (ChunkStore): a sweep that is killed and started again loads the finished chunks and computes only the
 rest, and its table is bit-for-bit that of an uninterrupted run (the sums are integers).
 
-Navigation metrics plug in as another GridMetric: a function of (params (C,), lam (C,)) returning per-
-modality sums (C, G) with their denominators; the planning lambda axis (sweep.axes.lam) only reaches
-metrics with uses_lam=True. Issue 8's closed-loop evaluation provides one (see README).
+Navigation metrics plug in as another GridMetric: fn(params chunk, lam (C,)) -> per-modality sums
+(V, C, G) with their denominators; the planning lambda axis (sweep.axes.lam) only reaches metrics with
+uses_lam=True. Issue 8's closed-loop evaluation provides one (see README).
 """
 
 from __future__ import annotations
@@ -44,31 +45,43 @@ FIELDS = tuple(f.name for f in dataclasses.fields(RetrievalParams))
 
 @dataclasses.dataclass(frozen=True)
 class Grid:
-    """P grid points: every combination of the varied axes, for each ablation variant (variant outermost)."""
+    """P = V x K grid points: each of V ablation variants at each of K combinations of the varied axes.
+
+    Point p is variant p // K at combination p % K. A chunk holds every variant and a run of combinations:
+    the fields that differ between variants (the flags) carry a (V,) axis, the fields that differ
+    between combinations a (C,) axis, and the rest are scalars, so the metric is a nested vmap whose
+    inner level recomputes only what depends on the swept axes (a sigma x eta grid re-runs the spatial
+    and boosting terms per point; instance similarities, forest pruning and top-K recall run once per
+    variant).
+    """
 
     axes: dict  # varied axis name -> tuple of values, in SweepAxes order
     variants: tuple[str, ...]
     points: tuple[dict, ...]  # (P,) {"variant": name, axis: value, ...}
-    params: RetrievalParams  # (P,) leaves
+    params: RetrievalParams  # (P,) leaves, every point in full
     lam: np.ndarray  # (P,) float32 planning lambda
+    outer: tuple[str, ...]  # fields that differ between variants
+    inner: tuple[str, ...]  # fields that differ between combinations (at least one field)
 
     @property
     def size(self) -> int:
         return len(self.points)
 
     @property
-    def varied(self) -> tuple[str, ...]:
-        """RetrievalParams fields that take more than one value over the grid (at least one field)."""
-        out = tuple(f for f in FIELDS if np.unique(np.asarray(getattr(self.params, f))).size > 1)
-        return out or FIELDS[:1]
+    def num_combos(self) -> int:
+        return self.size // len(self.variants)
 
     def chunk(self, lo: int, hi: int, size: int) -> tuple[RetrievalParams, np.ndarray]:
-        """Points [lo, hi) padded to `size` (last point repeated): varied fields (size,), the others scalars."""
-        varied = self.varied
+        """Combinations [lo, hi) padded to `size` (last repeated), for every variant; lam (size,)."""
+        K = self.num_combos
 
         def leaf(f):
             x = np.asarray(getattr(self.params, f))
-            return sharding.pad_leading(x[lo:hi], size) if f in varied else x[0]
+            if f in self.outer:
+                return x[::K]  # (V,)
+            if f in self.inner:
+                return sharding.pad_leading(x[lo:hi], size)  # (size,)
+            return x[0]
 
         return RetrievalParams(**{f: leaf(f) for f in FIELDS}), sharding.pad_leading(self.lam[lo:hi], size)
 
@@ -91,14 +104,19 @@ def make_grid(sweep: SweepConfig, base: RetrievalParams, lam: float = 0.0) -> Gr
             plist.append(p)
             lams.append(point.get("lam", lam))
     params = jax.tree.map(np.asarray, stack_params(plist))
-    return Grid(axes, tuple(sweep.variants), tuple(points), params, np.asarray(lams, np.float32))
+    V, K = len(sweep.variants), len(points) // len(sweep.variants)
+    view = {f: np.asarray(getattr(params, f)).reshape(V, K) for f in FIELDS}
+    outer = tuple(f for f in FIELDS if V > 1 and np.unique(view[f][:, 0]).size > 1)
+    inner = tuple(f for f in FIELDS if f not in outer and np.unique(view[f][0]).size > 1) or (FIELDS[0],)
+    return Grid(axes, tuple(sweep.variants), tuple(points), params, np.asarray(lams, np.float32), outer, inner)
 
 
 @dataclasses.dataclass(frozen=True)
 class GridMetric:
     """A metric of a chunk of grid points computed in one batched call.
 
-    fn(params (C,), lam (C,)) -> sums (C, G) over the modalities; the table reports sums / totals.
+    fn(params, lam (C,)) -> sums (V, C, G) over the modalities, params as Grid.chunk gives them (outer
+    fields (V,), inner fields (C,)); the table reports sums / totals.
     """
 
     name: str  # column of the table, e.g. "retrieval_accuracy"
@@ -118,33 +136,41 @@ def _digest(tree) -> str:
     return h.hexdigest()
 
 
+def _in_axes(fields: tuple[str, ...]) -> RetrievalParams:
+    return RetrievalParams(**{f: (0 if f in fields else None) for f in FIELDS})
+
+
 @functools.cache
-def _grid_correct(batched: tuple[str, ...]):
-    axes = RetrievalParams(**{f: (0 if f in batched else None) for f in FIELDS})
-    return jax.jit(jax.vmap(correct_counts, in_axes=(None, axes)))
+def _grid_correct(outer: tuple[str, ...], inner: tuple[str, ...]):
+    f = jax.vmap(correct_counts, in_axes=(None, _in_axes(inner)))  # (C, G)
+    if outer:
+        f = jax.vmap(f, in_axes=(None, _in_axes(outer)))  # (V, C, G)
+    else:
+        f = (lambda g: lambda b, p: g(b, p)[None])(f)  # (1, C, G)
+    return jax.jit(f)
 
 
-def grid_correct(batch: RetrievalBatch, params: RetrievalParams) -> jax.Array:
-    """Top-1 hits per modality (P, G) for a grid of params: one compiled call, vmapped over the grid.
+def grid_correct(batch: RetrievalBatch, params: RetrievalParams, outer: tuple[str, ...],
+                 inner: tuple[str, ...]) -> jax.Array:
+    """Top-1 hits per modality (V, C, G) for a chunk of grid points in one compiled call.
 
-    Fields with a leading axis (P,) are the varied ones; scalar fields are shared by every point, so
-    vmap leaves everything that depends on them alone unbatched (a sigma x eta grid recomputes only
-    the spatial and boosting terms per point). One compile per set of varied fields.
+    params: the `outer` fields (V,), the `inner` fields (C,), the rest scalars (Grid.chunk). A nested
+    vmap: everything that does not depend on the inner fields is computed once per variant. One compile
+    per (outer, inner) pair and chunk shape.
     """
-    batched = tuple(f for f in FIELDS if np.ndim(getattr(params, f)) == 1)
-    return _grid_correct(batched)(batch, params)
+    return _grid_correct(tuple(outer), tuple(inner))(batch, params)
 
 
-def retrieval_metric(batch: RetrievalBatch, meta: BatchMeta, mesh=None) -> GridMetric:
+def retrieval_metric(batch: RetrievalBatch, meta: BatchMeta, grid: Grid, mesh=None) -> GridMetric:
     """Retrieval accuracy (instance-level top-1, retrieval/evaluate.py's rule) as a GridMetric.
 
-    With a mesh the batch is replicated on every device and each chunk's grid points are split over them.
+    With a mesh the batch is replicated on every device and each chunk's combinations are split over them.
     """
     fp = _digest(batch)
     if mesh is not None:
         batch = sharding.replicate(batch, mesh)
-    return GridMetric("retrieval_accuracy", lambda params, lam: grid_correct(batch, params), meta.totals,
-                      meta.modalities, fp)
+    return GridMetric("retrieval_accuracy", lambda params, lam: grid_correct(batch, params, grid.outer, grid.inner),
+                      meta.totals, meta.modalities, fp)
 
 
 class ChunkStore:
@@ -200,10 +226,11 @@ def sweep_fingerprint(grid: Grid, metrics: Sequence[GridMetric], chunk: int) -> 
     return h.hexdigest()
 
 
-def chunk_shape(grid_size: int, chunk_size: int, mesh=None) -> int:
-    """Grid points per compiled call: chunk_size (at most the grid) rounded up to a multiple of the devices."""
+def chunk_shape(grid: Grid, chunk_size: int, mesh=None) -> int:
+    """Combinations per compiled call: chunk_size / variants (at least 1, at most all), rounded up to a
+    multiple of the devices."""
     n = mesh.size if mesh is not None else 1
-    c = min(chunk_size, max(grid_size, 1))
+    c = min(max(chunk_size // len(grid.variants), 1), grid.num_combos)
     return -(-c // n) * n
 
 
@@ -216,8 +243,9 @@ def evaluate_grid(
     Chunks already in `store` are loaded, not recomputed; each computed chunk is saved before the next.
     Timing is host-side, around the calls (the first computed chunk includes compilation).
     """
-    C = chunk_shape(grid.size, chunk_size, mesh)
-    n_chunks = -(-grid.size // C)
+    C = chunk_shape(grid, chunk_size, mesh)
+    K = grid.num_combos
+    n_chunks = -(-K // C)
     done = set(store.done()) if store is not None else set()
     done &= set(range(n_chunks))
     if done and log:
@@ -233,25 +261,30 @@ def evaluate_grid(
         if i in done:
             parts[i] = store.load(i)
             continue
-        lo, hi = i * C, min((i + 1) * C, grid.size)
+        lo, hi = i * C, min((i + 1) * C, K)
         params, lam = grid.chunk(lo, hi, C)  # fixed chunk shape: one compile
         if mesh is not None:
-            params = jax.tree.map(lambda x: sharding.shard_leading(x, mesh) if np.ndim(x) else
-                                  sharding.replicate(x, mesh), params)
+            params = RetrievalParams(**{
+                f: sharding.shard_leading(x, mesh) if f in grid.inner else sharding.replicate(x, mesh)
+                for f, x in ((f, getattr(params, f)) for f in FIELDS)})
             lam = sharding.shard_leading(lam, mesh)
         t0 = time.perf_counter()
         out = {m.name: m.fn(params, lam) for m in metrics}
-        out = {k: sharding.to_host(v)[: hi - lo] for k, v in out.items()}
+        out = {k: sharding.to_host(v)[:, : hi - lo] for k, v in out.items()}  # (V, c, G)
         times.append(time.perf_counter() - t0)
         parts[i] = out
         if store is not None:
             store.save(i, out)
         if pause_s:
             time.sleep(pause_s)
-    sums = {m.name: np.concatenate([parts[i][m.name] for i in range(n_chunks)]) for m in metrics}
+    sums = {}
+    for m in metrics:
+        full = np.concatenate([parts[i][m.name] for i in range(n_chunks)], axis=1)  # (V, K, G)
+        sums[m.name] = full.reshape(grid.size, *full.shape[2:])
     stats = {
-        "grid_points": grid.size, "chunk_size": C, "chunks": n_chunks, "chunks_resumed": len(done),
-        "chunks_computed": len(times), "first_chunk_s": round(times[0], 4) if times else None,
+        "grid_points": grid.size, "combos_per_chunk": C, "points_per_chunk": C * len(grid.variants),
+        "chunks": n_chunks, "chunks_resumed": len(done), "chunks_computed": len(times),
+        "first_chunk_s": round(times[0], 4) if times else None,
         "later_chunks_s": round(float(np.median(times[1:])), 4) if len(times) > 1 else None,
         "devices": mesh.size if mesh is not None else 1,
     }
@@ -301,20 +334,21 @@ def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
     out = []
     mods = list(dict.fromkeys(df["modality"]))
     for variant, dv in df.groupby("variant", sort=False):
-        fig, axs = plt.subplots(1, len(mods), figsize=(3.6 * len(mods), 3.2), squeeze=False)
+        fig, axs = plt.subplots(1, len(mods), figsize=(4.2 * len(mods), 3.6), squeeze=False, layout="constrained")
         for ax, mod in zip(axs[0], mods):
             piv = dv[dv["modality"] == mod].pivot_table(index=y, columns=x, values=metric, aggfunc="max")
-            im = ax.imshow(piv.values, origin="lower", vmin=0.0, vmax=1.0, cmap="viridis", aspect="auto")
+            im = ax.imshow(piv.values, origin="lower", cmap="viridis", aspect="auto")
+            fig.colorbar(im, ax=ax, shrink=0.85)
             ax.set_xticks(range(len(piv.columns)), [f"{v:g}" for v in piv.columns], rotation=90, fontsize=7)
             ax.set_yticks(range(len(piv.index)), [f"{v:g}" for v in piv.index], fontsize=7)
             ax.set_xlabel(x)
             ax.set_ylabel(y)
             ax.set_title(mod, fontsize=9)
             for (i, j), v in np.ndenumerate(piv.values):
-                if piv.shape[0] * piv.shape[1] <= 36:
-                    ax.text(j, i, f"{v:.2f}", ha="center", va="center", fontsize=6, color="w")
-        fig.colorbar(im, ax=axs[0].tolist(), shrink=0.8, label=metric)
-        fig.suptitle(f"{variant}: {metric} over {x} x {y}", fontsize=10)
+                if piv.size <= 100:
+                    ax.text(j, i, f"{100 * v:.1f}", ha="center", va="center", fontsize=5, color="w")
+        fig.suptitle(f"{variant}: {metric} (%) over {x} x {y}" + (" (best over the other axes)" if len(
+            [c for c in df.columns if c in AXES]) > 2 else ""), fontsize=10)
         path = folder / f"{variant}_{x}_{y}.png"
         fig.savefig(path, dpi=110)
         plt.close(fig)
@@ -339,10 +373,10 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
     if batch is None:
         raise UserError("no instruction of the episodes file yields a subgoal: nothing to sweep")
     mesh = sharding.batch_mesh() if cfg.sweep.shard and jax.device_count() > 1 else None
-    metrics = [retrieval_metric(batch, meta, mesh), *extra_metrics]
+    metrics = [retrieval_metric(batch, meta, grid, mesh), *extra_metrics]
     store = None
     if out is not None and cfg.sweep.checkpoint:
-        C = chunk_shape(grid.size, cfg.sweep.chunk_size, mesh)
+        C = chunk_shape(grid, cfg.sweep.chunk_size, mesh)
         store = ChunkStore(Path(out) / "checkpoints", sweep_fingerprint(grid, metrics, C), fresh=fresh)
     t0 = time.perf_counter()
     try:

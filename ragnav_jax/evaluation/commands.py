@@ -1,0 +1,84 @@
+"""CLI subcommands of the evaluation stage: sweep (hyperparameter grids) and tune (gradient tuning)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from ragnav_jax.errors import UserError
+
+
+def load_retrieval_inputs(run: str | Path, episodes_file: str | Path, cfg):
+    """(bank, scenes, episodes, embedder) of a run folder with scenes/ and memory/bank."""
+    from ragnav_jax.language.episodes import load_episodes
+    from ragnav_jax.memory.checkpoint import load_bank
+    from ragnav_jax.memory.commands import bank_dir
+    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.world.scene import load_scene_set
+
+    run = Path(run)
+    if not (run / "scenes").is_dir():
+        raise UserError(f"{run}: no scenes/ folder (run generate, explore and build-memory first)")
+    scenes = load_scene_set(run / "scenes")
+    bank = load_bank(bank_dir(run))
+    episodes = load_episodes(episodes_file, scenes)
+    embedder = make_embedder(bank.metas[0].embedder if bank.metas else cfg.memory.embedder,
+                             dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
+                             buckets=cfg.memory.token_buckets)
+    return bank, scenes, episodes, embedder
+
+
+def cmd_sweep(args, cfg) -> int:
+    from ragnav_jax.evaluation.sweep import run_sweep
+    from ragnav_jax.retrieval.evaluate import prepare_batch
+    from ragnav_jax.runs import init_run
+
+    bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
+    out = Path(args.out)
+    init_run(out, cfg, "sweep")
+    batch, meta = prepare_batch(bank, scenes, episodes, embedder)
+    rows, summary = run_sweep(cfg, batch, meta, out, fresh=args.fresh, progress=not args.quiet,
+                              log=lambda m: print(m, flush=True))
+    summary.update({"run": str(args.run), "episodes_file": str(args.episodes)})
+    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    for v, b in summary["best"].items():
+        print(f"best {v}: " + ", ".join(f"{k}={b[k]}" for k in b))
+    print(f"{summary['grid_points']} grid points x {len(summary['modalities']) + 1} modalities -> {out / 'sweep.csv'}"
+          f" ({summary['chunks_computed']} chunks computed, {summary['chunks_resumed']} resumed, "
+          f"{summary['wall_s']} s); heatmaps in {out / 'heatmaps'}")
+    return 0
+
+
+def cmd_tune(args, cfg) -> int:
+    from ragnav_jax.config import dump_yaml
+    from ragnav_jax.evaluation.tune import run_tune
+    from ragnav_jax.runs import init_run
+
+    bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
+    out = Path(args.out)
+    init_run(out, cfg, "tune")
+    summary, tuned_cfg = run_tune(cfg, bank, scenes, episodes, embedder, out, progress=not args.quiet)
+    (out / "tuned.yaml").write_text("# ragnav tune: the input config with the tuned retrieval section "
+                                    "(use with --config)\n" + dump_yaml(tuned_cfg))
+    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "tuned_config": str(out / "tuned.yaml")})
+    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    print((out / "tune.md").read_text())
+    h = summary["held_out"]
+    print(f"held-out accuracy: tuned {h['tuned']:.4f} vs best grid point {h['grid_best']:.4f} "
+          f"(config {h['config']:.4f}); tuned values in {out / 'tuned.yaml'} and {out / 'tuned'} (orbax)")
+    return 0
+
+
+def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    for name, func, text in (
+        ("sweep", cmd_sweep, "retrieval accuracy over a hyperparameter grid (sweep section), one compiled call per chunk"),
+        ("tune", cmd_tune, "optax tuning of the continuous retrieval hyperparameters vs the best grid point"),
+    ):
+        p = sub.add_parser(name, parents=[common], help=text)
+        p.add_argument("--run", required=True, help="run folder with scenes/ and memory/bank")
+        p.add_argument("--episodes", required=True, help="episodes .jsonl file")
+        p.add_argument("--out", required=True, help="output folder")
+        if name == "sweep":
+            p.add_argument("--fresh", action="store_true", help="discard checkpoints of an earlier sweep in --out")
+        p.set_defaults(func=func)
