@@ -69,6 +69,13 @@ def _pooled(sims: jax.Array, mask: jax.Array) -> jax.Array:
     return 0.5 * (best + mean)
 
 
+def _pow(x: jax.Array, w: jax.Array) -> jax.Array:
+    """x ** w for x >= 0, with a finite gradient in w where x == 0 (the value is jnp.power's; the tuning
+    surrogate differentiates w_loc and w_sensor, and a far instance's location term underflows to 0)."""
+    pos = x > 0
+    return jnp.where(pos, jnp.power(jnp.where(pos, x, 1.0), w), jax.lax.stop_gradient(jnp.power(x, w)))
+
+
 def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     """Per-slot scores (N, M) with the location, sensor and room terms applied, and the terms.
 
@@ -87,7 +94,7 @@ def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     slot_sim, loc, sens, anchor_sim = tgt[si], loc[si], sens[si], anc[si]  # each (N, M)
     room = room_term(idx, q, p)  # (N,)
     base = (1.0 - p.w_slot) * node_sem[:, None] + p.w_slot * slot_sim
-    inst = base * jnp.power(loc, p.w_loc) * jnp.power(sens, p.w_sensor) * room[:, None]
+    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None]
     inst = jnp.where(idx.slot_mask & idx.node_mask[:, None], inst, K.NEG)
     return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens, anchor_sim=anchor_sim, room=room)
 
