@@ -2,11 +2,12 @@
 control step that runs several physics steps per command.
 
 The controller is pure pursuit on a padded waypoint list: it aims at the first waypoint at least
-`lookahead` metres away (never going back along the list), drives straight at it in the world frame
+`lookahead` metres away (never going back along the list, skipping ahead at most SKIP_WINDOW points), drives straight at it in the world frame
 (the base is holonomic: slide x, slide y, hinge yaw), turns the heading toward the motion so the
 forward camera looks where the robot goes, and slows near the last waypoint. Waypoints come from grid
-paths with clearance, and the lookahead is below that clearance, so chords between waypoints do not
-cut through walls; contacts keep the robot out of anything the map missed.
+paths with clearance from mapped obstacles; aiming at most `lookahead` ahead keeps the chord close to
+the path around corners, so the robot does not cut through walls, and contacts (with the scan-aware
+slow-down) keep it out of anything the map missed.
 """
 
 from __future__ import annotations
@@ -16,8 +17,10 @@ import jax.numpy as jnp
 from flax import struct
 from mujoco import mjx
 
+from ragnav_jax.sim.model import mjx_step
 from ragnav_jax.sim.sensors import wrap_angle
 
+SKIP_WINDOW = 6  # waypoints ahead of the current one searched for the nearest (a short stretch of path)
 SLOW_GAP = 0.4  # metres of free space ahead below which the scan-aware controller slows down
 
 
@@ -53,9 +56,12 @@ def follow(
     ids = jnp.arange(P)
     last = jnp.maximum(path.n - 1, 0)
     d = jnp.linalg.norm(path.points - pose[None, :2], axis=-1)
-    beyond = (ids >= path.index) & (ids <= last) & (d >= lookahead)
+    # Skip to the nearest waypoint a little way ahead (the robot may have been pushed past some), then
+    # aim at the first one at least `lookahead` away.
+    window = (ids >= path.index) & (ids <= jnp.minimum(path.index + SKIP_WINDOW, last))
+    start = jnp.argmin(jnp.where(window, d, jnp.inf)).astype(jnp.int32)
+    beyond = (ids >= start) & (ids <= last) & (d >= lookahead)
     index = jnp.where(jnp.any(beyond), jnp.argmax(beyond), last).astype(jnp.int32)
-    index = jnp.maximum(index, path.index)
     target = path.points[index]
     e = target - pose[:2]
     dist = jnp.linalg.norm(e)
@@ -80,7 +86,7 @@ def physics(m: mjx.Model, d: mjx.Data, ctrl: jax.Array, substeps: int) -> tuple[
 
     def body(_, c):
         d, pen = c
-        d = mjx.step(m, d)
+        d = mjx_step(m, d)
         dist = d._impl.contact.dist
         pen = jnp.maximum(pen, -jnp.min(dist, initial=0.0)) if dist.size else pen
         return d, pen

@@ -15,6 +15,7 @@ with a progress bar, and cuts each scene's outputs into an ExplorationStream plu
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import zlib
 from typing import Sequence
@@ -28,7 +29,9 @@ from mujoco import mjx
 from ragnav_jax.config import Config, ExploreConfig, SimConfig
 from ragnav_jax.sim import grid as G
 from ragnav_jax.sim.controller import Path, follow, physics
-from ragnav_jax.sim.model import SceneGeometry, SimModel, batch_model, build_template, scene_geometry, slot_counts
+from ragnav_jax.sim.model import (
+    SceneGeometry, SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts,
+)
 from ragnav_jax.sim.sensors import camera_visibility, lidar_angles, lidar_scan, odometry
 from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.scene import Scene
@@ -114,8 +117,7 @@ def make_explorer(model: SimModel, spec: G.GridSpec, sim: SimConfig, cfg: Explor
     rb = layout.robot_body
 
     def init(m, inp: SceneInputs) -> ExploreState:
-        d = mjx.make_data(m).replace(qpos=inp.start.astype(jnp.float32))
-        d = mjx.forward(m, d)
+        d = initial_data(m, inp.start)
         f32, b = jnp.float32, jnp.bool_
         return ExploreState(
             d=d, seen=jnp.zeros((H, W), b), hit=jnp.zeros((H, W), b), viewed=jnp.zeros((H, W), b),
@@ -285,13 +287,18 @@ def scene_inputs(scenes: Sequence[Scene], explorer: Explorer, seed: int) -> Scen
 
 
 def explorer_for(scenes: Sequence[Scene], cfg: Config) -> Explorer:
-    """One explorer (template + grid) that fits every scene of a set."""
+    """One explorer (template + grid) that fits every scene of a set. Explorers are cached by their
+    static shapes and settings, so scene sets that pad alike share one compilation in a process."""
     walls, objects = slot_counts(scenes)
-    model = build_template(walls, objects, cfg.sim)
     spec = G.grid_spec(
         scenes, cfg.explore.map_resolution, cfg.explore.grid_resolution, cfg.sim.robot_radius + cfg.explore.clearance
     )
-    return make_explorer(model, spec, cfg.sim, cfg.explore)
+    return _cached_explorer(walls, objects, spec, cfg.sim, cfg.explore)
+
+
+@functools.lru_cache(maxsize=8)
+def _cached_explorer(walls: int, objects: int, spec: G.GridSpec, sim: SimConfig, cfg: ExploreConfig) -> Explorer:
+    return make_explorer(build_template(walls, objects, sim), spec, sim, cfg)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -305,6 +312,7 @@ class SceneResult:
     grid_factor: int  # map cells per exploration-grid cell
     seen: np.ndarray  # (h, w) bool
     hit: np.ndarray  # (h, w) bool
+    viewed: np.ndarray  # (h, w) bool cells the camera looked at
     frontier: np.ndarray  # (h, w) bool frontier cells left at the end
     blocked: np.ndarray  # (hc, wc) bool exploration cells given up
     steps: int
@@ -313,6 +321,7 @@ class SceneResult:
     max_penetration: float
     plans: int
     given_up: int
+    control_dt: float  # seconds per control step
 
 
 def cut_results(scenes: Sequence[Scene], explorer: Explorer, s: ExploreState) -> list[SceneResult]:
@@ -334,9 +343,11 @@ def cut_results(scenes: Sequence[Scene], explorer: Explorer, s: ExploreState) ->
         out.append(SceneResult(
             stream=stream, true_pose=s.rec_true[b][keep], origin=G.scene_frame(scene, explorer.spec)[0],
             resolution=explorer.spec.res, grid_factor=k, seen=s.seen[b][:h, :w], hit=s.hit[b][:h, :w],
+            viewed=s.viewed[b][:h, :w],
             frontier=s.frontier[b][:h, :w], blocked=s.blocked[b][: -(-h // k), : -(-w // k)],
             steps=int(s.steps[b]), finished=bool(s.finished[b]), path_length=float(s.path_length[b]),
             max_penetration=float(s.max_penetration[b]), plans=int(s.plans[b]), given_up=int(s.given_up[b]),
+            control_dt=explorer.sim.timestep * explorer.sim.substeps,
         ))
     return out
 

@@ -79,7 +79,8 @@ def cell_centers(spec: GridSpec, origin: jax.Array) -> jax.Array:
 
 def cell_of(spec: GridSpec, origin: jax.Array, xy: jax.Array) -> jax.Array:
     """(..., 2) int32 (i = row/y, j = col/x) of points (..., 2); may lie outside the grid."""
-    ij = jnp.floor((xy - origin) / spec.res).astype(jnp.int32)
+    o = jnp.reshape(origin, (1,) * (xy.ndim - 1) + (2,))
+    ij = jnp.floor((xy - o) / spec.res).astype(jnp.int32)
     return ij[..., ::-1]
 
 
@@ -146,9 +147,10 @@ def update_viewed(
     step = float(angles[1] - angles[0]) if L > 1 else 1.0
     full = L > 1 and abs(step * L - 2 * math.pi) < 1e-4
     xy = cell_centers(spec, origin)
-    rel = xy - pose[:2]
+    rel = xy - pose[None, None, :2]
     dist = jnp.linalg.norm(rel, axis=-1)
-    bearing = jnp.arctan2(jnp.sin(jnp.arctan2(rel[..., 1], rel[..., 0]) - pose[2]), jnp.cos(jnp.arctan2(rel[..., 1], rel[..., 0]) - pose[2]))
+    heading = jnp.arctan2(rel[..., 1], rel[..., 0]) - pose[2]
+    bearing = jnp.arctan2(jnp.sin(heading), jnp.cos(heading))
     i = jnp.round((bearing - float(angles[0])) / step).astype(jnp.int32)
     i = jnp.mod(i, L) if full else jnp.clip(i, 0, L - 1)
     reach = ranges[i] + spec.res / 2

@@ -15,6 +15,7 @@ MuJoCo's C engine to check MJX against it.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from typing import Sequence
 
@@ -212,8 +213,25 @@ def batch_model(mx: mjx.Model, geometry: SceneGeometry) -> tuple[mjx.Model, mjx.
     return model, in_axes
 
 
-def initial_data(model: SimModel, start) -> mjx.Data:
-    """MJX data at a start pose (3,) = (x, y, yaw), kinematics computed (jit/vmap friendly)."""
-    d = mjx.make_data(model.mx)
-    d = d.replace(qpos=jax.numpy.asarray(start, dtype=jax.numpy.float32))
-    return d
+def _mjx_numerics(fn):
+    """MJX's own code relies on NumPy-style rank promotion; allow it inside calls into MJX only, so our
+    code stays under the strict setting the tests use."""
+
+    @functools.wraps(fn)
+    def wrapped(*args, **kwargs):
+        with jax.numpy_rank_promotion("allow"):
+            return fn(*args, **kwargs)
+
+    return wrapped
+
+
+mjx_step = _mjx_numerics(mjx.step)
+mjx_forward = _mjx_numerics(mjx.forward)
+mjx_ray = _mjx_numerics(mjx.ray)
+mjx_make_data = _mjx_numerics(mjx.make_data)
+
+
+def initial_data(m: mjx.Model, start: jax.Array) -> mjx.Data:
+    """MJX data of model `m` at a start pose (3,) = (x, y, yaw), kinematics computed (jit/vmap friendly)."""
+    d = mjx_make_data(m).replace(qpos=jax.numpy.asarray(start, dtype=jax.numpy.float32))
+    return mjx_forward(m, d)

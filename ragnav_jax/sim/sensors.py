@@ -16,6 +16,7 @@ import numpy as np
 from mujoco import mjx
 
 from ragnav_jax.config import SimConfig
+from ragnav_jax.sim.model import mjx_ray
 
 SIDE_POINTS = 0.35  # camera targets on an object's top face: the middle and +-35% of its longer extent
 
@@ -45,7 +46,7 @@ def lidar_scan(m: mjx.Model, d: mjx.Data, angles: jax.Array, height: float, max_
     pnt = jnp.stack([x, y, jnp.asarray(height, jnp.float32)])
     theta = yaw + angles
     vec = jnp.stack([jnp.cos(theta), jnp.sin(theta), jnp.zeros_like(theta)], -1)
-    dist, _ = jax.vmap(lambda v: mjx.ray(m, d, pnt, v, bodyexclude=robot_body))(vec)
+    dist, _ = jax.vmap(lambda v: mjx_ray(m, d, pnt, v, bodyexclude=robot_body))(vec)
     return jnp.where((dist < 0) | (dist > max_range), max_range, dist).astype(jnp.float32)
 
 
@@ -89,7 +90,7 @@ def camera_visibility(
     def clear(target, geom):
         v = target - cam
         n = jnp.linalg.norm(v)
-        dist, gid = mjx.ray(m, d, cam, v / jnp.maximum(n, 1e-6), bodyexclude=robot_body)
+        dist, gid = mjx_ray(m, d, cam, v / jnp.maximum(n, 1e-6), bodyexclude=robot_body)
         return (gid == geom) | (dist < 0) | (dist >= n - 1e-3)
 
     los = jax.vmap(jax.vmap(clear, in_axes=(0, None)))(targets, obj_geom).any(-1)
