@@ -318,7 +318,7 @@ class RetrievalConfig:
     anchor_threshold: float = 0.45
     boost_threshold: float = 0.45
     w_slot: float = 0.7  # instance phrase vs node fingerprint
-    match_threshold: float = 0.6
+    match_threshold: float = 0.45  # head-noun similarity for an instance to count as the category (superlatives)
     sigma_loc: float = 1.5  # metres, location hint Gaussian width
     w_loc: float = 1.0
     w_sensor: float = 1.0

@@ -31,8 +31,9 @@ def within_hops(g, i, hops):
     return set(nx.single_source_shortest_path_length(g, i, cutoff=int(hops)))
 
 
-def anchor_guided(sem_a, sem_b, pos, nbr, nbr_mask, top_k, hops, thr, sigma):
+def anchor_guided(sem_a, sem_b, pos, nbr, nbr_mask, top_k, hops, thr, sigma, pos_b=None):
     n = len(sem_a)
+    pos_b = pos if pos_b is None else pos_b
     g = graph(nbr, nbr_mask)
     order = sorted(range(n), key=lambda i: -sem_a[i])[: int(top_k)]
     scores, anchor = np.full(n, NEG), np.full(n, -1)
@@ -42,11 +43,11 @@ def anchor_guided(sem_a, sem_b, pos, nbr, nbr_mask, top_k, hops, thr, sigma):
         best, best_j = -np.inf, -1
         for j in sorted(within_hops(g, i, hops)):
             if sem_b[j] >= thr:
-                v = sem_b[j] / (1 + np.linalg.norm(pos[i] - pos[j]))
+                v = sem_b[j] / (1 + np.linalg.norm(pos[i] - pos_b[j]))
                 if v > best:
                     best, best_j = v, j
         if best_j >= 0:
-            d2 = float(np.sum((pos[i] - pos[best_j]) ** 2))
+            d2 = float(np.sum((pos[i] - pos_b[best_j]) ** 2))
             scores[i] = sem_a[i] * math.exp(-d2 / (2 * sigma**2))
             anchor[i] = best_j
     return scores, anchor

@@ -63,10 +63,11 @@ def test_anchor_guided(seed, n, top_k, hops, thr, sigma):
     rng = np.random.default_rng(seed)
     nbr, nm, pos = random_graph(rng, n, 4)
     sem_a, sem_b = tie_free(rng, n), tie_free(rng, n)
+    pos_b = pos + rng.uniform(-0.5, 0.5, pos.shape).astype(np.float32)  # where each node's B instance lies
     f = jax.jit(K.anchor_guided, static_argnames=("max_k", "max_hops"))
     s, a, has = f(sem_a, sem_b, pos, nbr, nm, jnp.int32(top_k), jnp.int32(hops), jnp.float32(thr),
-                  jnp.float32(sigma), max_k=min(6, n), max_hops=3)
-    rs, ra = ref.anchor_guided(sem_a, sem_b, pos, nbr, nm, top_k, hops, thr, sigma)
+                  jnp.float32(sigma), max_k=min(6, n), max_hops=3, pos_b=pos_b)
+    rs, ra = ref.anchor_guided(sem_a, sem_b, pos, nbr, nm, top_k, hops, thr, sigma, pos_b)
     np.testing.assert_allclose(np.asarray(s), rs, atol=ATOL)
     np.testing.assert_array_equal(np.asarray(a), ra)
     np.testing.assert_array_equal(np.asarray(has), ra >= 0)

@@ -110,6 +110,7 @@ def anchor_guided(
     max_k: int = 16,
     max_hops: int = 3,
     gate_tau: jax.Array | None = None,
+    pos_b: jax.Array | None = None,
 ) -> tuple[jax.Array, jax.Array, jax.Array]:
     """Two-stage anchor-guided retrieval for "A near B".
 
@@ -119,18 +120,21 @@ def anchor_guided(
     candidate's score is S_spatial(v_i | v_B) with that anchor. Pruned and non-candidate nodes get NEG.
     gate_tau: see `gate` (the validated score is multiplied by the anchor's gate, 1.0 in the forward pass).
 
-    sem_a, sem_b: (N,); pos: (N, 3); nbr, nbr_mask: (N, Dmax). Returns (scores (N,), anchor (N,) int32
+    Distances are between `pos` (where node i's A lies) and `pos_b` (where node j's B lies; default
+    `pos`): the key poses themselves in the paper, the matched object instances in our index.
+    sem_a, sem_b: (N,); pos, pos_b: (N, 3); nbr, nbr_mask: (N, Dmax). Returns (scores (N,), anchor (N,) int32
     with -1 where none, has_anchor (N,) bool).
     """
     sem_a, sem_b, pos, nbr, nbr_mask = map(jnp.asarray, (sem_a, sem_b, pos, nbr, nbr_mask))
+    pos_b = pos if pos_b is None else jnp.asarray(pos_b)
     n = sem_a.shape[0]
     cand, keep = topk_mask(sem_a, top_k, max_k)
     reach = neighbourhood(cand, n, nbr, nbr_mask, hops, max_hops)  # (K, N)
     ok = reach & (sem_b >= anchor_threshold)[None]
-    pair = jnp.where(ok, sem_b[None] * combo_score(pos[cand][:, None], pos[None]), NEG)
+    pair = jnp.where(ok, sem_b[None] * combo_score(pos[cand][:, None], pos_b[None]), NEG)
     best = jnp.argmax(pair, axis=1)
     has = jnp.any(ok, axis=1) & keep
-    s = spatial_score(sem_a[cand], pos[cand], pos[best], sigma) * gate(sem_b[best], anchor_threshold, gate_tau)
+    s = spatial_score(sem_a[cand], pos[cand], pos_b[best], sigma) * gate(sem_b[best], anchor_threshold, gate_tau)
     scores = jnp.full((n,), NEG).at[cand].set(jnp.where(has, s, NEG))
     anchor = jnp.full((n,), -1, jnp.int32).at[cand].set(jnp.where(has, best, -1).astype(jnp.int32))
     has_anchor = jnp.zeros((n,), bool).at[cand].set(has)
