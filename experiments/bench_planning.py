@@ -102,14 +102,19 @@ def time_jax(method: str, problems, lams, repeats: int, **kw) -> tuple[dict, obj
     }, out
 
 
-def time_python(fn, dist: np.ndarray, lam: float, sample: int, episodes: int) -> tuple[dict, list[float]]:
+def time_python(fn, dist: np.ndarray, lam: float, sample: int, episodes: int, repeats: int = 1) -> tuple[dict, list[float]]:
+    """Median (min, max) of `repeats` timed passes over `sample` episodes, extrapolated to `episodes`."""
     lists = [d.astype(float).tolist() for d in dist[:sample]]
-    t = time.perf_counter()
-    values = [fn(d, lam) for d in lists]
-    elapsed = time.perf_counter() - t
+    runs = []
+    for _ in range(max(1, repeats)):
+        t = time.perf_counter()
+        values = [fn(d, lam) for d in lists]
+        runs.append(time.perf_counter() - t)
+    elapsed = statistics.median(runs)
     return {
         "python_episodes_timed": sample,
         "python_s_timed": elapsed,
+        "python_s_timed_all": runs,
         "python_s_per_episode": elapsed / sample,
         "python_s_all_episodes": elapsed / sample * episodes,
         "python_extrapolated": sample < episodes,
@@ -121,7 +126,8 @@ def bench_case(name, method, n, fn, args, rng) -> tuple[dict, object, np.ndarray
     lams = jnp.array([args.lam], jnp.float32)
     jx, out = time_jax(method, problems, lams, args.repeats)
     sample = args.python_sample_bf if method == "brute_force" else args.python_sample_hk
-    py, values = time_python(fn, dist, args.lam, min(sample, args.episodes), args.episodes)
+    py, values = time_python(fn, dist, args.lam, min(sample, args.episodes), args.episodes,
+                             getattr(args, "python_repeats", 1))
     got = np.asarray(out.objective[0, : len(values)])
     agree = bool(np.allclose(got, np.array(values), rtol=1e-4, atol=1e-3))
     row = {
@@ -182,6 +188,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--lam", type=float, default=5.0, help="order penalty (metres per inverted pair)")
     ap.add_argument("--python-sample-bf", type=int, default=50, help="episodes timed in Python, n = 8")
     ap.add_argument("--python-sample-hk", type=int, default=10, help="episodes timed in Python, n = 12")
+    ap.add_argument("--python-repeats", type=int, default=1, help="timed passes over the Python sample (median)")
     ap.add_argument("--gap-episodes", type=int, default=1000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)

@@ -1,0 +1,44 @@
+"""CLI subcommand `ragnav bench`: the benchmark suite (ragnav_jax/bench), thin argument parsing only."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def cmd_bench(args, cfg) -> int:
+    import os
+
+    from ragnav_jax.bench.profiles import PROFILES, SECTIONS, scaled
+    from ragnav_jax.bench.suite import run_suite
+    from ragnav_jax.errors import UserError
+
+    os.environ.setdefault("HF_HUB_OFFLINE", "1")
+    if args.quick and args.gpu:
+        raise UserError("--quick and --gpu are different profiles; pick one (scale the GPU one with --scale)")
+    bad = [s for s in args.only or [] if s not in SECTIONS]
+    if bad:
+        raise UserError(f"--only: unknown section(s) {', '.join(bad)} (known: {', '.join(SECTIONS)})")
+    if args.scale <= 0:
+        raise UserError("--scale must be > 0")
+    profile = PROFILES["gpu" if args.gpu else "quick" if args.quick else "full"]
+    profile = scaled(profile, args.scale)
+    log = (lambda m: None) if args.quiet else (lambda m: print(m, flush=True))
+    doc = run_suite(args.out, profile, args.only or (), log=log, notes=args.notes, argv=sys.argv)
+    failed = [k for k, v in doc["sections"].items() if v["status"] == "failed"]
+    if failed:
+        raise UserError(f"section(s) failed: {', '.join(failed)} (tracebacks in {args.out}/bench.json)")
+    return 0
+
+
+def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.bench.profiles import SECTIONS
+
+    p = sub.add_parser("bench", parents=[common], help="benchmark suite with peer comparisons -> RUN/bench.json, bench.md")
+    p.add_argument("--out", required=True, help="run folder for bench.json, bench.md and plots")
+    p.add_argument("--quick", action="store_true", help="smaller sizes (about 2 minutes on a 2-core CPU)")
+    p.add_argument("--gpu", action="store_true", help="GPU-sized profile (1M nodes/queries, 16384 envs, 1024 scenes)")
+    p.add_argument("--scale", type=float, default=1.0, help="multiply every size of the profile (e.g. --gpu --scale 0.001)")
+    p.add_argument("--only", nargs="+", metavar="SECTION", help=f"run only these sections ({', '.join(SECTIONS)})")
+    p.add_argument("--notes", default="", help="free text stored in the report (e.g. machine load)")
+    p.set_defaults(func=cmd_bench, overrides_allowed=False)

@@ -1,0 +1,395 @@
+"""The sections of `ragnav bench`: each takes a Profile and returns a JSON-ready dict with its rows and
+its peer comparisons (`comparison` records). Retrieval, planning and simulation call the benchmark
+functions of experiments/bench_{retrieval,planning,sim}.py (loaded from the source tree), so the
+scripts and the suite share one implementation.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib.util
+import math
+import sys
+import time
+import types
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from ragnav_jax.bench.profiles import Profile
+from ragnav_jax.bench.timing import stage_clock, stats
+
+REPO = Path(__file__).resolve().parents[2]
+PAPER_MS = (185.0, 195.0)  # the paper's retrieval latency per query
+
+
+class Unavailable(RuntimeError):
+    """A section or stage whose code is not in this tree (recorded as 'not available')."""
+
+
+def experiment(name: str) -> types.ModuleType:
+    """experiments/<name>.py of the source tree, imported as a module (its functions, not its CLI)."""
+    path = REPO / "experiments" / f"{name}.py"
+    if not path.is_file():
+        raise Unavailable(f"{path} not found (the suite needs a source checkout)")
+    key = f"ragnav_experiments_{name}"
+    if key not in sys.modules:
+        spec = importlib.util.spec_from_file_location(key, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[key] = mod
+        try:
+            spec.loader.exec_module(mod)
+        except Exception:
+            del sys.modules[key]
+            raise
+    return sys.modules[key]
+
+
+def comparison(section: str, name: str, ours: dict, peer: dict, peer_name: str, unit: str, **extra) -> dict:
+    """Ours vs a peer on the same work: seconds per `unit` (median, min, max); ratio = peer / ours
+    (> 1: ours is faster), with the range from the extremes (peer min / ours max .. peer max / ours min)."""
+    return {
+        "section": section, "name": name, "unit": unit, "ours": ours, "peer": {"name": peer_name, **peer},
+        "ratio": peer["median_s"] / ours["median_s"],
+        "ratio_range": [peer["min_s"] / ours["max_s"], peer["max_s"] / ours["min_s"]],
+        **extra,
+    }
+
+
+def _per(s: dict, k: float) -> dict:
+    return {**s, "median_s": s["median_s"] / k, "min_s": s["min_s"] / k, "max_s": s["max_s"] / k}
+
+
+# ----------------------------------------------------------------------------------------------------
+
+
+def bench_retrieval(p: Profile, log: Callable[[str], None]) -> dict:
+    """Warm single-query latency and batched throughput per memory size; similarity stage vs faiss."""
+    mod = experiment("bench_retrieval")
+    rng = np.random.default_rng(0)
+    rows, comps = [], []
+    for n, q in zip(p.retrieval_sizes, p.retrieval_queries):
+        r = mod.bench_size(n, 384, q, p.repeats, rng, chunk=p.retrieval_chunk, faiss_queries=p.faiss_queries)
+        r["batched_queries_per_s_range"] = [q / r["batched"]["max_s"], q / r["batched"]["min_s"]]
+        rows.append(r)
+        fq = r["sim_faiss_queries"]
+        comps.append(comparison("retrieval", f"similarity vs faiss IndexFlatIP, {n} nodes", _per(r["sim_jax"], q),
+                                _per(r["sim_faiss"], fq), "faiss-cpu IndexFlatIP", "query",
+                                nodes=n, queries=q, faiss_queries=fq, top1_agreement=r["sim_top1_agreement"]))
+        paper = {"median_s": 1e-3 * sum(PAPER_MS) / 2, "min_s": 1e-3 * PAPER_MS[0], "max_s": 1e-3 * PAPER_MS[1],
+                 "repeats": 0}
+        comps.append(comparison("retrieval", f"single query vs paper, {n} nodes", r["single"], paper,
+                                "paper (185-195 ms/query, reported)", "query", nodes=n,
+                                compile_s=r["compile_single_s"]))
+        log(f"retrieval N={n}: single {r['single_ms']:.2f} ms, batched {r['batched_queries_per_s']:.0f} q/s, "
+            f"faiss/JAX per query {r['sim_ratio_faiss_over_jax']:.2f}")
+    return {"rows": rows, "comparisons": comps}
+
+
+def random_graphs(rng: np.random.Generator, graphs: int, n: int, degree: float = 6.0):
+    """Random geometric graphs like topological maps: n nodes at 1 per m^2, an edge (Euclidean length)
+    between nodes closer than the radius giving about `degree` neighbours. Returns weights (G, n, n)
+    float32 (inf: no edge) and mask (G, n) bool."""
+    side = math.sqrt(n)
+    radius = math.sqrt(degree / math.pi)
+    pos = rng.uniform(0, side, (graphs, n, 2)).astype(np.float32)
+    d = np.linalg.norm(pos[:, :, None] - pos[:, None, :], axis=-1)
+    w = np.where((d < radius) & ~np.eye(n, dtype=bool), d, np.inf).astype(np.float32)
+    return w, np.ones((graphs, n), bool)
+
+
+def _networkx_all_pairs(w: np.ndarray) -> dict:
+    import networkx as nx
+
+    g = nx.Graph()
+    g.add_nodes_from(range(w.shape[0]))
+    i, j = np.nonzero(np.isfinite(w) & np.triu(np.ones_like(w, bool), 1))
+    g.add_weighted_edges_from(zip(i.tolist(), j.tolist(), w[i, j].astype(float).tolist()))
+    return g
+
+
+def bench_paths(p: Profile, log: Callable[[str], None]) -> dict:
+    """Batched jitted all-pairs shortest paths (memory.paths, Floyd-Warshall) vs networkx all-pairs
+    Dijkstra on the same graphs; networkx runs on a sample and is extrapolated linearly (said in the row)."""
+    import jax
+    import networkx as nx
+
+    from ragnav_jax.memory.paths import batched_shortest_paths
+
+    rng = np.random.default_rng(1)
+    rows, comps = [], []
+    for n in p.path_nodes:
+        w, mask = random_graphs(rng, p.path_graphs, n)
+        wj, mj = jax.device_put(w), jax.device_put(mask)
+        t0 = time.perf_counter()
+        compiled = batched_shortest_paths.lower(wj, mj).compile()
+        compile_s = time.perf_counter() - t0
+        cost, _ = jax.block_until_ready(compiled(wj, mj))
+        ts = []
+        for _ in range(p.repeats):
+            t0 = time.perf_counter()
+            jax.block_until_ready(compiled(wj, mj))
+            ts.append(time.perf_counter() - t0)
+        ours = stats(ts)
+        sample = min(p.path_nx_sample, p.path_graphs)
+        graphs = [_networkx_all_pairs(w[g]) for g in range(sample)]  # graph construction is not timed
+        nts = []
+        for _ in range(max(1, min(p.repeats, 3))):
+            t0 = time.perf_counter()
+            res = [dict(nx.all_pairs_dijkstra_path_length(g)) for g in graphs]
+            nts.append((time.perf_counter() - t0) * p.path_graphs / sample)
+        cost = np.asarray(cost)
+        ref = np.full((sample, n, n), np.inf, np.float32)
+        for g, dd in enumerate(res):
+            for a, row in dd.items():
+                ref[g, a, list(row)] = list(row.values())
+        agree = bool(np.allclose(cost[:sample], ref, rtol=1e-4, atol=1e-4))
+        peer = stats(nts)
+        row = {"nodes": n, "graphs": p.path_graphs, "compile_s": compile_s, "jax": ours, "networkx": peer,
+               "networkx_graphs_timed": sample, "networkx_extrapolated": sample < p.path_graphs,
+               "mean_degree": float(np.isfinite(w).sum(-1).mean()), "agrees_with_networkx": agree}
+        rows.append(row)
+        comps.append(comparison("paths", f"all-pairs shortest paths vs networkx, {p.path_graphs} graphs of {n} nodes",
+                                _per(ours, p.path_graphs), _per(peer, p.path_graphs), "networkx all_pairs_dijkstra",
+                                "graph", nodes=n, compile_s=compile_s, agrees=agree,
+                                peer_extrapolated_from=sample))
+        log(f"paths n={n}: jax {ours['median_s']:.3f} s / {p.path_graphs} graphs (compile {compile_s:.1f} s), "
+            f"networkx {peer['median_s']:.1f} s, x{comps[-1]['ratio']:.0f}, agree={agree}")
+    return {"rows": rows, "comparisons": comps}
+
+
+def bench_planning(p: Profile, log: Callable[[str], None]) -> dict:
+    """Brute force n=8 and Held-Karp n=12 over many episodes vs the plain Python itertools loops."""
+    mod = experiment("bench_planning")
+    args = types.SimpleNamespace(episodes=p.plan_episodes, lam=5.0, repeats=p.repeats, python_sample_bf=p.plan_python_bf,
+                                 python_sample_hk=p.plan_python_hk, python_repeats=max(1, min(p.repeats, 3)))
+    rng = np.random.default_rng(0)
+    rows, comps = [], []
+    for name, method, n, fn in (("brute_force_n8", "brute_force", 8, mod.python_brute_force),
+                                ("held_karp_n12", "held_karp", 12, mod.python_held_karp)):
+        row, _, _ = mod.bench_case(name, method, n, fn, args, rng)
+        rows.append(row)
+        ours = stats(row["run_s_all"])
+        scale = p.plan_episodes / row["python_episodes_timed"]
+        peer = stats([t * scale for t in row["python_s_timed_all"]])
+        comps.append(comparison("planning", f"{method.replace('_', ' ')} n={n}, {p.plan_episodes} episodes vs Python",
+                                _per(ours, p.plan_episodes), _per(peer, p.plan_episodes), "Python itertools loop",
+                                "episode", goals=n, compile_s=row["compile_s"], agrees=row["agrees_with_python"],
+                                peer_extrapolated_from=row["python_episodes_timed"]))
+        log(f"planning {name}: x{comps[-1]['ratio']:.0f} vs Python (compile {row['compile_s']:.1f} s)")
+    return {"rows": rows, "comparisons": comps}
+
+
+def bench_simulation(p: Profile, log: Callable[[str], None]) -> dict:
+    """Env-steps/s of the MJX NavEnv (physics + lidar + visibility) per batch size vs the MuJoCo C loop."""
+    from ragnav_jax.config import load_config
+    from ragnav_jax.sim.env import NavEnv
+    from ragnav_jax.world.scene import example_scene_path, load_scene
+
+    mod = experiment("bench_sim")
+    cfg = load_config()
+    scene = load_scene(example_scene_path())
+    env = NavEnv([scene], cfg.sim)
+    layout = env.model.layout
+    c = mod.bench_c(scene, cfg, layout.walls, layout.objects, p.sim_c_steps, p.repeats)
+
+    def spread(r, work):  # bench_sim reports the median call; min/max where it gives them
+        med = r["median_call_s"]
+        return _per({"median_s": med, "min_s": r.get("min_call_s", med), "max_s": r.get("max_call_s", med),
+                     "repeats": r["repeats"]}, work)
+
+    peer = spread(c, c["steps_per_call"])
+    rows, comps = [], []
+    for b in p.sim_batches:
+        r = mod.bench_mjx(env, b, p.sim_steps, p.repeats)
+        rows.append(r)
+        comps.append(comparison("simulation", f"MJX batch {b} vs MuJoCo C, 1 thread", spread(r, b * p.sim_steps), peer,
+                                "MuJoCo C loop (mj_step, mj_multiRay, mj_ray), 1 thread", "env step", batch=b,
+                                compile_s=r["compile_s"], env_steps_per_s=r["env_steps_per_s"]))
+        log(f"simulation batch {b}: {r['env_steps_per_s']:.0f} env-steps/s (C {c['env_steps_per_s']:.0f}), "
+            f"compile {r['compile_s']:.1f} s")
+    return {"c_engine": c, "rows": rows, "comparisons": comps, "scene": scene.name,
+            "note": "min/max of a figure equal its median where experiments/bench_sim.py reports medians only"}
+
+
+# ----------------------------------------------------------------------------------------------------
+# End to end on the paper preset
+
+
+STAGES = ("generate", "explore", "build_memory", "episodes", "retrieve", "plan", "execute")
+
+
+def paper_config(p: Profile, scenes: int, spacing: float | None = None):
+    """The paper preset (configs/paper.yaml) with `scenes` scenes and the profile's embedder and explore budget."""
+    from ragnav_jax.config import load_config
+
+    path = REPO / "configs" / "paper.yaml"
+    ov = [f"world.num_scenes={scenes}", f"memory.embedder={p.e2e_embedder}"]
+    if p.e2e_explore_steps is not None:
+        ov.append(f"explore.max_steps={p.e2e_explore_steps}")
+    if p.e2e_explore_batch is not None:
+        ov.append(f"explore.batch_size={p.e2e_explore_batch}")
+    if spacing is not None:
+        ov += [f"memory.keyframe_spacing={spacing}", f"memory.keyframe_min_spacing={min(0.3, 0.6 * spacing):.3f}"]
+    return load_config(str(path) if path.is_file() else None, ov)
+
+
+def execute_stage():
+    """The closed-loop evaluation's entry point (evaluate_navigation), or Unavailable where it is missing."""
+    try:
+        from ragnav_jax.evaluation.episode import evaluate_navigation
+    except ImportError as e:
+        raise Unavailable(f"closed-loop evaluation (ragnav eval, issue 8) is not in this tree ({e})") from e
+    return evaluate_navigation
+
+
+def run_pipeline(cfg, p: Profile, log, reuse=None) -> tuple[dict, dict]:
+    """The RAGNav pipeline on cfg's scenes, each stage under stage_clock; returns (record, artifacts).
+
+    reuse: artifacts of an earlier call (scenes and exploration results) to skip generate and explore.
+    """
+    import jax
+
+    from ragnav_jax.language.episodes import generate_episodes
+    from ragnav_jax.memory.build import build_bank, memory_summary
+    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.planning.plan import plan_instruction
+    from ragnav_jax.retrieval.evaluate import prepare_batch, score_bank
+    from ragnav_jax.retrieval.params import params_from_config
+    from ragnav_jax.sim.explore import explore_scenes
+    from ragnav_jax.world.generator import generate_scenes
+
+    st: dict = {}
+    art = dict(reuse or {})
+    if "scenes" not in art:
+        with stage_clock(st.setdefault("generate", {})):
+            art["scenes"] = generate_scenes(cfg.world, cfg.seed)
+        with stage_clock(st.setdefault("explore", {})):
+            art["explored"] = explore_scenes(art["scenes"], cfg)
+        st["explore"]["control_steps"] = int(sum(r.steps for r in art["explored"]))
+    scenes = art["scenes"]
+    m = cfg.memory
+    embedder = make_embedder(m.embedder, dim=m.hashing_dim, batch_size=m.embed_batch, buckets=m.token_buckets)
+    with stage_clock(st.setdefault("build_memory", {})):
+        bank, _ = build_bank(scenes, [r.stream for r in art["explored"]], cfg, embedder=embedder)
+        jax.block_until_ready(bank.memory)
+    with stage_clock(st.setdefault("episodes", {})):
+        episodes = [g.episode for g in generate_episodes(scenes, cfg.episodes, cfg.seed)]
+    with stage_clock(st.setdefault("retrieve", {})):
+        batch, meta = prepare_batch(bank, scenes, episodes, embedder)
+        if batch is not None:
+            jax.block_until_ready(score_bank(batch.index, batch.queries, batch.qmask, params_from_config(cfg.retrieval)))
+    st["retrieve"]["subgoals"] = sum(s is not None for s in meta.slots)
+    by_name = {s.name: s for s in scenes}
+    k = p.e2e_plan_episodes
+    todo = episodes[:: max(1, len(episodes) // max(k, 1))][:k]
+    failed = 0
+    with stage_clock(st.setdefault("plan", {})):
+        for ep in todo:
+            try:
+                plan_instruction(bank, by_name[ep.scene], ep.instruction, embedder, cfg)
+            except Exception:  # an instruction the parser rejects counts as a failure, not a crash
+                failed += 1
+    st["plan"].update({"instructions": len(todo), "failed": failed,
+                       "per_instruction_s": st["plan"]["wall_s"] / max(len(todo), 1)})
+    try:
+        evaluate_navigation = execute_stage()
+        runs = episodes[:: max(1, len(episodes) // max(p.e2e_execute_episodes, 1))][: p.e2e_execute_episodes]
+        streams = {s.name: r.stream for s, r in zip(scenes, art["explored"])}
+        with stage_clock(st.setdefault("execute", {})):
+            _, summ_ex = evaluate_navigation(bank, scenes, runs, embedder, cfg, method="ragnav", streams=streams)
+        st["execute"].update({"episodes": len(runs), "per_episode_s": st["execute"]["wall_s"] / max(len(runs), 1),
+                              "success_rate": summ_ex.get("success_rate")})
+    except Unavailable as e:
+        st["execute"] = {"status": "not available", "reason": str(e)}
+    except Exception as e:  # the closed loop is another engineer's work in progress: record, go on
+        st["execute"] = {"status": "failed", "reason": f"{type(e).__name__}: {e}"}
+    summ = memory_summary(bank)
+    art.update(bank=bank, episodes=episodes, batch=batch, meta=meta, embedder=embedder)
+    rec = {"scenes": len(scenes), "episodes": len(episodes), "mean_nodes": summ["mean_nodes"], "stages": st}
+    log(f"end to end, {len(scenes)} scenes ({summ['mean_nodes']:.0f} nodes/scene): " + ", ".join(
+        f"{k} {v['wall_s']:.2f} s" for k, v in st.items() if "wall_s" in v))
+    return rec, art
+
+
+_ARTIFACTS: dict = {}  # (profile name, scenes) -> pipeline artifacts, so the sweep reuses end-to-end runs
+
+
+def bench_end_to_end(p: Profile, log: Callable[[str], None]) -> dict:
+    """Stage wall time, compile time and peak RSS vs scene count, then vs nodes per scene (keyframe spacing,
+    on the scenes of the scene-count run of the same size, whose exploration is reused)."""
+    from ragnav_jax.bench.timing import max_rss_mb
+
+    by_scenes = []
+    for n in p.e2e_scenes:
+        rec, art = run_pipeline(paper_config(p, n), p, log)
+        _ARTIFACTS[(p.name, n)] = art
+        by_scenes.append(rec)
+    by_nodes = []
+    art = _ARTIFACTS.get((p.name, p.e2e_spacing_scenes))
+    for sp in p.e2e_spacings:
+        rec, art = run_pipeline(paper_config(p, p.e2e_spacing_scenes, sp), p, log,
+                                reuse=None if art is None else {k: art[k] for k in ("scenes", "explored")})
+        rec["keyframe_spacing"] = sp
+        by_nodes.append(rec)
+    ex = by_scenes[0]["stages"].get("execute", {})
+    return {"preset": "configs/paper.yaml", "embedder": p.e2e_embedder, "explore_max_steps": p.e2e_explore_steps,
+            "explore_batch": p.e2e_explore_batch, "by_scenes": by_scenes, "by_nodes": by_nodes,
+            "execute": ex if "status" in ex else {"status": "ok"}, "process_max_rss_mb": max_rss_mb(),
+            "note": "wall_s = compile_s + run_s; compile_s sums JAX tracing, lowering and XLA compile events "
+                    "(jax.monitoring) inside the stage; peak_rss_mb is the process's resident set (host and XLA "
+                    "buffers) sampled every 10 ms during the stage. Runs after the first reuse compiled code where "
+                    "padded shapes repeat; plan and execute run on a sample of the episodes (counts in the JSON)."}
+
+
+def bench_sweep(p: Profile, log: Callable[[str], None]) -> dict:
+    """A sigma x eta (x lambda where navigation metrics exist) grid over the paper-preset retrieval batch."""
+    from ragnav_jax.config import SweepAxes
+    from ragnav_jax.errors import UserError
+    from ragnav_jax.evaluation.sweep import run_sweep
+
+    base = paper_config(p, p.sweep_scenes)
+    art = _ARTIFACTS.get((p.name, p.sweep_scenes))
+    if art is None:
+        _, art = run_pipeline(base, p, log)
+        _ARTIFACTS[(p.name, p.sweep_scenes)] = art
+
+    def cfg_for(axes: SweepAxes):
+        sweep = dataclasses.replace(base.sweep, axes=axes, checkpoint=False, variants=("ragnav",))
+        return dataclasses.replace(base, sweep=sweep)
+
+    k3 = math.ceil(p.sweep_points ** (1 / 3) - 1e-9)
+    k2 = math.ceil(math.sqrt(p.sweep_points) - 1e-9)
+    lin = lambda a, b, k: tuple(float(x) for x in np.round(np.linspace(a, b, k), 5))  # noqa: E731
+    tries = [("sigma x eta x lambda", SweepAxes(sigma=lin(0.5, 6, k3), eta=lin(0, 1, k3), lam=lin(0, 10, k3))),
+             ("sigma x eta", SweepAxes(sigma=lin(0.5, 6, k2), eta=lin(0, 1, k2)))]
+    note = None
+    for label, axes in tries:
+        cfg = cfg_for(axes)
+        try:
+            first: dict = {}
+            with stage_clock(first):
+                _, summary = run_sweep(cfg, art["batch"], art["meta"], None)
+        except UserError as e:
+            note = f"{label}: {e}"
+            log(f"sweep: {label} not possible here ({e}); falling back")
+            continue
+        ts = []
+        for _ in range(max(1, min(p.repeats, 3))):
+            t0 = time.perf_counter()
+            run_sweep(cfg, art["batch"], art["meta"], None)
+            ts.append(time.perf_counter() - t0)
+        points = summary["grid_points"]
+        warm = stats(ts)
+        log(f"sweep {label}: {points} points, {points / warm['median_s']:.0f} points/s (first call {first['wall_s']:.1f} s)")
+        return {"grid": label, "grid_points": points, "scenes": p.sweep_scenes,
+                "subgoals": sum(s is not None for s in art["meta"].slots), "first_call": first, "warm": warm,
+                "points_per_s": points / warm["median_s"], "note": note}
+    raise Unavailable(note or "no sweep grid could run")
+
+
+SECTION_FUNCS = {
+    "retrieval": bench_retrieval, "paths": bench_paths, "planning": bench_planning, "simulation": bench_simulation,
+    "end_to_end": bench_end_to_end, "sweep": bench_sweep,
+}

@@ -1,0 +1,88 @@
+"""`ragnav bench`: runs the sections of a profile, writes RUN/bench.json (machine, versions, every
+figure and comparison) after each section so a killed run keeps what it measured, then RUN/bench.md
+with plots.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import json
+import time
+import traceback
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from ragnav_jax.bench.profiles import SECTIONS, Profile
+from ragnav_jax.bench.sections import SECTION_FUNCS, Unavailable
+from ragnav_jax.bench.timing import machine, max_rss_mb
+
+NOTE = ("Timings are host wall clock around calls that block on their results, after warm-up, the median of "
+        "several repeats with min and max; compile time is reported apart. Every ratio is peer time / our time on "
+        "the same work in this run (> 1: ours is faster). Python and networkx baselines time a sample of the "
+        "episodes or graphs and are extrapolated linearly (the comparison says from how many).")
+
+
+def _jsonable(x):
+    import numpy as np
+
+    if isinstance(x, dict):
+        return {str(k): _jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, (np.floating, np.integer, np.bool_)):
+        return x.item()
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    if isinstance(x, float) and not np.isfinite(x):
+        return None
+    return x
+
+
+def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: Callable[[str], None] = print,
+              notes: str = "", argv: Sequence[str] | None = None) -> dict:
+    """Runs the profile's sections (all, or `only`), writing out/bench.json and out/bench.md; returns the doc."""
+    from ragnav_jax.bench.report import write_report
+    from ragnav_jax.runs import git_commit, package_versions
+
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    names = [s for s in SECTIONS if not only or s in only]
+    doc = {
+        "benchmark": "ragnav bench", "profile": profile.name, "profile_settings": _jsonable(vars(profile)),
+        "time": _dt.datetime.now().isoformat(timespec="seconds"), "argv": list(argv or []), "git_commit": git_commit(),
+        "machine": machine(), "packages": _pkg_versions(package_versions()), "note": NOTE, "notes": notes,
+        "sections": {}, "comparisons": [],
+    }
+    t_all = time.perf_counter()
+    for name in names:
+        log(f"== {name}")
+        t0 = time.perf_counter()
+        try:
+            res = SECTION_FUNCS[name](profile, log)
+            res["status"] = "ok"
+        except Unavailable as e:
+            res = {"status": "not available", "reason": str(e)}
+            log(f"{name}: not available ({e})")
+        except Exception as e:  # one failing section must not lose the others' figures
+            res = {"status": "failed", "reason": f"{type(e).__name__}: {e}", "traceback": traceback.format_exc()}
+            log(f"{name}: FAILED {type(e).__name__}: {e}")
+        res["section_wall_s"] = time.perf_counter() - t0
+        doc["sections"][name] = res
+        doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
+        doc["total_wall_s"] = time.perf_counter() - t_all
+        doc["process_max_rss_mb"] = max_rss_mb()
+        (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+    write_report(doc, out)
+    log(f"wrote {out / 'bench.json'} and {out / 'bench.md'} ({doc['total_wall_s']:.0f} s)")
+    return doc
+
+
+def _pkg_versions(base: dict) -> dict:
+    from importlib import metadata
+
+    for name in ("faiss-cpu", "psutil", "jax-cuda12-plugin", "jax-cuda13-plugin"):
+        try:
+            base[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            pass
+    return base

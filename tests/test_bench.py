@@ -1,0 +1,79 @@
+"""`ragnav bench`: the quick profile's peer comparisons all land in bench.json and bench.md, and the GPU
+profile runs end to end at tiny scale on the CPU (chunked retrieval, capped faiss, its sweep)."""
+
+import json
+
+import pytest
+
+from ragnav_jax.bench.profiles import FULL, GPU, PROFILES, QUICK, SECTIONS, scaled
+from ragnav_jax.cli import main
+
+PEER_SECTIONS = ("retrieval", "paths", "planning", "simulation")
+
+
+def test_profiles_scale_down_and_keep_their_shape():
+    assert set(PROFILES) == {"quick", "full", "gpu"}
+    assert max(GPU.retrieval_sizes) >= 1_000_000 and max(GPU.retrieval_queries) >= 1_000_000
+    assert max(GPU.sim_batches) >= 16384 and 1024 in GPU.e2e_scenes and GPU.sweep_points >= 1000
+    assert FULL.retrieval_sizes == (80, 1000, 10000, 100000) and FULL.path_nodes == (80, 200)
+    assert FULL.plan_episodes == 10_000 and FULL.sim_batches[0] == 1 and FULL.sim_batches[-1] == 1024
+    tiny = scaled(GPU, 0.001)
+    assert tiny.name == "gpu@0.001" and tiny.retrieval_sizes == (16, 100, 1000) and tiny.retrieval_chunk == 5
+    assert all(n >= 16 for n in tiny.retrieval_sizes) and len(set(tiny.retrieval_sizes)) == len(tiny.retrieval_sizes)
+    assert tiny.e2e_scenes == (1, 2) and tiny.e2e_embedder == "hashing" and tiny.e2e_explore_steps == 200
+    assert scaled(QUICK, 1.0) is QUICK
+    with pytest.raises(ValueError):
+        scaled(QUICK, 0)
+
+
+def test_bench_rejects_bad_arguments(tmp_path, capsys):
+    assert main(["bench", "--out", str(tmp_path), "--quick", "--gpu"]) == 2
+    assert main(["bench", "--out", str(tmp_path), "--only", "nonsense"]) == 2
+    assert "unknown section" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_quick_bench_reports_every_comparison(tmp_path):
+    out = tmp_path / "bench"
+    assert main(["bench", "--out", str(out), "--quick", "--scale", "0.05", "--quiet", "--only", *PEER_SECTIONS]) == 0
+    doc = json.loads((out / "bench.json").read_text())
+    assert {"cpu_model", "cpu_count", "memory_gb", "jax_devices"} <= set(doc["machine"])
+    assert doc["packages"]["jax"] != "not installed"
+    assert all(doc["sections"][s]["status"] == "ok" for s in PEER_SECTIONS)
+    comps = doc["comparisons"]
+    peers = {(c["section"], c["peer"]["name"].split()[0]) for c in comps}
+    assert {("retrieval", "faiss-cpu"), ("retrieval", "paper"), ("paths", "networkx"), ("planning", "Python"),
+            ("simulation", "MuJoCo")} <= peers
+    names = " ".join(c["name"] for c in comps)
+    assert "brute force n=8" in names and "held karp n=12" in names
+    for c in comps:
+        o = c["ours"]
+        assert o["min_s"] <= o["median_s"] <= o["max_s"] and c["ratio"] > 0
+        assert c["ratio_range"][0] <= c["ratio"] <= c["ratio_range"][1]
+    assert all(c.get("agrees", True) for c in comps)
+    assert all(r["compile_s"] > 0 for r in doc["sections"]["planning"]["rows"])
+    md = (out / "bench.md").read_text()
+    assert "## Comparisons" in md and "faiss" in md and "networkx" in md and (out / "retrieval.png").is_file()
+
+
+@pytest.mark.slow
+def test_gpu_profile_runs_at_tiny_scale_on_cpu(tmp_path):
+    out = tmp_path / "gpu"
+    assert main(["bench", "--out", str(out), "--gpu", "--scale", "0.001", "--quiet",
+                 "--only", "retrieval", "end_to_end", "sweep"]) == 0
+    doc = json.loads((out / "bench.json").read_text())
+    assert doc["profile"] == "gpu@0.001"
+    r = doc["sections"]["retrieval"]["rows"]
+    assert [x["nodes"] for x in r] == [16, 100, 1000]  # 80, 1k and 10k all floor to 16 nodes, deduplicated
+    assert all(x["query_chunk"] < x["batch_queries"] and x["sim_top1_agreement"] >= 0.99 for x in r)
+    e2e = doc["sections"]["end_to_end"]
+    assert e2e["status"] == "ok" and [x["scenes"] for x in e2e["by_scenes"]] == [1, 2]
+    st = e2e["by_scenes"][0]["stages"]
+    for s in ("generate", "explore", "build_memory", "episodes", "retrieve", "plan"):
+        assert st[s]["wall_s"] >= st[s]["compile_s"] >= 0 and st[s]["peak_rss_mb"] > 0
+    assert "execute" in st
+    assert len(e2e["by_nodes"]) == 2
+    sw = doc["sections"]["sweep"]
+    assert sw["status"] == "ok" and sw["grid_points"] >= 1 and sw["points_per_s"] > 0
+    assert set(doc["sections"]) == {"retrieval", "end_to_end", "sweep"} and set(SECTIONS) > set(doc["sections"])
+    assert (out / "end_to_end_scenes.png").is_file() and (out / "end_to_end_nodes.png").is_file()
