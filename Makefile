@@ -4,8 +4,9 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-stamp
 DEMO_OUT ?= runs/demo
+BENCH_OUT ?= runs/bench
 
-.PHONY: install demo test lint clean
+.PHONY: install demo test lint clean bench
 
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
@@ -22,6 +23,10 @@ demo: install
 
 test: install
 	$(PY) -m pytest -q tests
+
+# Benchmark suite with peer comparisons (README, Performance): BENCH_ARGS=--quick for the 2-minute variant.
+bench: install
+	$(VENV)/bin/ragnav bench --out $(BENCH_OUT) $(BENCH_ARGS)
 
 lint: install
 	$(VENV)/bin/ruff check ragnav_jax tests experiments

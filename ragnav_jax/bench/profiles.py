@@ -57,8 +57,8 @@ QUICK = Profile(
     path_graphs=200, path_nx_sample=5,
     plan_episodes=1000, plan_python_bf=2, plan_python_hk=1,
     sim_batches=(1, 16, 64), sim_steps=4, sim_c_steps=50,
-    e2e_scenes=(1,), e2e_spacings=(0.8, 0.5), e2e_spacing_scenes=1, e2e_plan_episodes=3,
-    e2e_explore_steps=600, e2e_execute_episodes=2,
+    e2e_scenes=(1,), e2e_spacings=(0.8, 0.5), e2e_spacing_scenes=1, e2e_plan_episodes=2,
+    e2e_explore_steps=400, e2e_execute_episodes=1,
     sweep_points=36, sweep_scenes=1,
 )
 

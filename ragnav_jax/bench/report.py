@@ -133,8 +133,12 @@ def write_report(doc: dict, out: Path) -> Path:
          doc["note"], ""]
     if doc.get("notes"):
         L += [doc["notes"], ""]
-    L += ["## Comparisons", ""] + comparison_table(doc["comparisons"]) + [""]
     secs = doc["sections"]
+    L += ["| section | status | wall s | process CPU s | cores used (CPU / wall) |", "|---|---|---:|---:|---:|"]
+    for name, s in secs.items():
+        w, c = s.get("section_wall_s", 0.0), s.get("section_cpu_s", 0.0)
+        L.append(f"| {name} | {s.get('status')} | {w:.1f} | {c:.1f} | {c / w if w else 0:.2f} |")
+    L += ["", "## Comparisons", ""] + comparison_table(doc["comparisons"]) + [""]
     for name, s in secs.items():
         if s.get("status") != "ok":
             L += [f"**{name}: {s.get('status')}** - {s.get('reason')}", ""]

@@ -56,7 +56,7 @@ def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: 
     t_all = time.perf_counter()
     for name in names:
         log(f"== {name}")
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         try:
             res = SECTION_FUNCS[name](profile, log)
             res["status"] = "ok"
@@ -67,6 +67,7 @@ def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: 
             res = {"status": "failed", "reason": f"{type(e).__name__}: {e}", "traceback": traceback.format_exc()}
             log(f"{name}: FAILED {type(e).__name__}: {e}")
         res["section_wall_s"] = time.perf_counter() - t0
+        res["section_cpu_s"] = time.process_time() - c0  # / wall: cores this process got (machine load)
         doc["sections"][name] = res
         doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
         doc["total_wall_s"] = time.perf_counter() - t_all

@@ -54,19 +54,20 @@ _CLOCK: _CompileClock | None = None
 
 @contextlib.contextmanager
 def stage_clock(record: dict, key: str = "wall_s"):
-    """Times the block into record[key], JAX compile seconds inside it into record['compile_s'] and the
-    process's peak resident memory during it into record['peak_rss_mb'] (sampled every 10 ms)."""
+    """Times the block into record[key], JAX compile seconds inside it into record['compile_s'], process CPU
+    seconds into record['cpu_s'] and the peak resident memory during it into record['peak_rss_mb'] (10 ms)."""
     global _CLOCK
     if _CLOCK is None:
         _CLOCK = _CompileClock()
     c0 = _CLOCK.total
     _CLOCK.active += 1
     sampler = _PeakRss()
-    t0 = time.perf_counter()
+    t0, c0_cpu = time.perf_counter(), time.process_time()
     try:
         yield record
     finally:
         wall = time.perf_counter() - t0
+        record["cpu_s"] = time.process_time() - c0_cpu  # all threads; cpu_s / wall_s shows contention
         _CLOCK.active -= 1
         record[key] = wall
         record["compile_s"] = min(_CLOCK.total - c0, wall)
