@@ -414,6 +414,32 @@ class TuneConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class EvalConfig:
+    """Closed-loop navigation evaluation (`ragnav eval`, ragnav_jax/evaluation/episode.py)."""
+
+    method: str = "ragnav"  # see evaluation/episode.py NAV_METHODS
+    candidates: int = 4  # retrieved candidates per subgoal (top-k) the reflection may fall back to
+    retries: int = 3  # rejected candidates per goal before it is given up
+    max_steps: int = 3000  # control steps per episode (the step budget; 0.1 s each by default)
+    leg_max_steps: int = 1200  # control steps one leg may take before it is cut
+    found_radius: float = 1.0  # metres from the goal's box within which FOUND counts (MultiON)
+    approach_gap: float = 0.45  # metres from the target's box the robot stops at before declaring
+    arrive_tol: float = 0.3  # metres from a leg's last waypoint that count as arrived
+    stall_steps: int = 40  # control steps without progress (< 2 mm each) that end a leg as stuck
+    look_headings: int = 8  # camera headings of the look-around on arrival (a turn in place)
+    path_points: int = 128  # static waypoint buffer per leg
+    strict_lam: float = 1.0e4  # planning lambda for strict episodes (metres per order inversion)
+    batch_size: int = 512  # episodes executed together in one vmapped call
+
+    def __post_init__(self):
+        _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
+        _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
+        _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
+        _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",
+               "look_headings >= 1, path_points >= 2, batch_size >= 1")
+
+
+@dataclasses.dataclass(frozen=True)
 class Config:
     """The whole resolved configuration of a run."""
 
@@ -429,6 +455,7 @@ class Config:
     retrieval: RetrievalConfig = dataclasses.field(default_factory=RetrievalConfig)
     sweep: SweepConfig = dataclasses.field(default_factory=SweepConfig)
     tune: TuneConfig = dataclasses.field(default_factory=TuneConfig)
+    eval: EvalConfig = dataclasses.field(default_factory=EvalConfig)
 
 
 # ----------------------------------------------------------------------------------------------------

@@ -1,0 +1,611 @@
+"""The closed loop: perception (retrieval) - planning - execution (MJX) - reflection, over many episodes.
+
+    rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, method="ragnav", streams=streams)
+
+Phases (host Python only between them; every simulation step runs inside a jitted batched call):
+1. Plan: parse every instruction, retrieve the top-`eval.candidates` nodes of every subgoal in one
+   batched kernel call (`retrieve_candidates`), solve each episode's visiting order.
+2. Execute legs: every active episode drives its current leg together (`execute.Executor.run`:
+   lax.while_loop over control steps, vmapped over episodes and their scenes' geometry).
+3. Reflect on arrival (`Executor.look`: camera visibility at several headings from the simulated
+   pose; `confirm`: is a visible object the subgoal's target?). Confirmed: drive up to it (an approach
+   leg) and declare FOUND. Not confirmed, or the approach is blocked: reject the candidate, take the
+   goal's next candidate and re-plan the remaining order, at most `eval.retries` times per goal.
+Judging (MultiON-style, on the simulated trajectory only): a FOUND for goal k counts when the robot's
+simulated position is within `eval.found_radius` of goal k's box; passing near a goal without
+declaring does not count; a FOUND elsewhere is a recorded wrong declaration. An episode succeeds when
+every goal was found (strict episodes: in the instruction's order) within `eval.max_steps`.
+
+Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
+also plans and drives straight lines (no map); the retrieval baselines (naive_rag, graphrag, lightrag)
+on RAGNav's planner; navigation baselines reimplemented *in the style of* the papers: `remembr`
+(flat caption memory with positions, text retrieval plus a position term, instruction order,
+straight-line local planning), `etpnav` (no prior memory: replays the robot's own frontier
+exploration from the start pose until the target is seen, then approaches it; instruction order) and
+`oracle` (true goal positions, optimal order, topological paths).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import math
+import time
+from collections import Counter, defaultdict
+from typing import Sequence
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ragnav_jax.config import Config
+from ragnav_jax.errors import UserError
+from ragnav_jax.evaluation.execute import Executor, make_executor, pad_points
+from ragnav_jax.language.episodes import Episode, SceneFacts, head_matches, relation_holds, sensor_holds
+from ragnav_jax.language.types import Subgoal
+from ragnav_jax.memory.paths import reconstruct_path
+from ragnav_jax.memory.types import MemoryBank
+from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
+from ragnav_jax.retrieval.evaluate import goal_items, node_scores, prepare_batch
+from ragnav_jax.retrieval.index import node_slots
+from ragnav_jax.retrieval.params import ablation_params, params_from_config
+from ragnav_jax.retrieval.score import score_subgoal
+from ragnav_jax.world.scene import Scene
+
+NAV_METHODS = ("ragnav", "ragnav:no_forest", "ragnav:no_topology", "ragnav:no_spatial", "ragnav:no_boost",
+               "naive_rag", "graphrag", "lightrag", "remembr", "etpnav", "oracle")
+THIN_M = 0.3  # metres between replayed exploration waypoints (ETPNav-style)
+
+
+@dataclasses.dataclass(frozen=True)
+class MethodSpec:
+    name: str
+    retrieval: str  # ragnav variant ("ragnav", "no_forest", ...), a BASELINES name, "remembr", "oracle", "etpnav"
+    straight: bool  # straight-line legs and Euclidean order costs (no topological map)
+    optimal_order: bool  # solve the order (False: instruction order)
+
+
+def method_spec(name: str) -> MethodSpec:
+    if name not in NAV_METHODS:
+        raise UserError(f"unknown method '{name}' (known: {', '.join(NAV_METHODS)})")
+    if name.startswith("ragnav"):
+        variant = name.split(":", 1)[1] if ":" in name else "ragnav"
+        return MethodSpec(name, variant, variant == "no_topology", True)
+    if name in BASELINES:
+        return MethodSpec(name, name, False, True)
+    return {"remembr": MethodSpec(name, "remembr", True, False), "etpnav": MethodSpec(name, "etpnav", False, False),
+            "oracle": MethodSpec(name, "oracle", False, True)}[name]
+
+
+# ----------------------------------------------------------------------------------------------------
+# Perception checks
+
+
+def box_distance(obj, xy) -> float:
+    """Planar metres from a point to an object's box footprint (0 inside)."""
+    dx = max(0.0, abs(xy[0] - obj.position[0]) - obj.size[0] / 2)
+    dy = max(0.0, abs(xy[1] - obj.position[1]) - obj.size[1] / 2)
+    return math.hypot(dx, dy)
+
+
+def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_radius: float) -> list[int]:
+    """Visible objects (indices into scene.objects) that the robot's local check accepts as sg's target.
+
+    The check uses only what the robot sees now: the head noun (category, synonym or hypernym, as an
+    open-vocabulary detector would), the attributes, relations to anchors that are visible too, a
+    coordinate hint (the robot knows where it is) and sensor thresholds read off the object.
+    Superlatives and room names cannot be checked from one place and are not: a distractor that
+    differs only there is accepted (a wrong declaration the judge will record).
+    """
+    objs = facts.scene.objects
+    vis = [objs[i] for i in visible]
+    out = []
+    for i in visible:
+        o = objs[i]
+        t = sg.target
+        if not head_matches(o, t.head) or not set(t.attributes) <= set(facts.attrs[o.id]):
+            continue
+        ok = True
+        for r in t.relations:
+            anchors = [a for a in vis if head_matches(a, r.anchor.head) and set(r.anchor.attributes) <= set(facts.attrs[a.id])]
+            ok &= any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors)
+        if sg.location is not None:
+            ok &= math.dist(o.position[:2], (sg.location.x, sg.location.y)) <= location_radius
+        for c in sg.sensors:
+            if not c.is_superlative:
+                ok &= c.reading in o.readings and sensor_holds(c, o.readings[c.reading])
+            else:
+                ok &= c.reading in o.readings
+        if ok:
+            out.append(i)
+    return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# Perception phase: candidates for every subgoal of every episode
+
+
+@dataclasses.dataclass
+class Candidates:
+    subgoals: list  # per episode: tuple of Subgoal, or None (parse failure)
+    nodes: list  # per episode: list (per goal) of candidate node lists, best first
+    timing: dict
+
+
+def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
+    obs = np.asarray(bank.memory.obs_object[b])
+    dist = np.asarray(bank.memory.obs_distance[b])
+    hit = obs == gidx
+    if hit.any():
+        d = np.where(hit, dist, np.inf).min(1)
+        return int(np.argmin(d))
+    n = bank.metas[b].num_nodes
+    return -1 if n == 0 else -1
+
+
+def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
+                        embedder, cfg: Config) -> Candidates:
+    """Top-k candidate nodes per subgoal for a method; timings of the retrieval kernels."""
+    k = cfg.eval.candidates
+    names = list(bank.names)
+    by_name = {s.name: s for s in scenes}
+    items = goal_items(episodes)
+    per_ep: dict[str, list] = defaultdict(list)
+    subgoals: dict[str, object] = {}
+    for ep, kk, goal, sg in items:
+        subgoals.setdefault(ep.id, None)
+        if sg is not None:
+            subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
+    cand_of: dict[tuple[str, int], list[int]] = {}
+    timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
+    if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
+        p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
+        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
+        timing["embed_ms"] = bmeta.embed_ms
+        if batch is not None:
+            fn = jax.jit(lambda i, q, pp: jax.lax.top_k(
+                jnp.where(i.node_mask[:, None, :], node_scores(i, q, pp), -jnp.inf), k))
+            jax.block_until_ready(fn(batch.index, batch.queries, p))
+            t0 = time.perf_counter()
+            top_s, top_n = jax.block_until_ready(fn(batch.index, batch.queries, p))
+            live = sum(sl is not None for sl in bmeta.slots)
+            timing["retrieval_ms_batched"] = 1e3 * (time.perf_counter() - t0) / max(live, 1)
+            top_s, top_n = np.asarray(top_s), np.asarray(top_n)
+            b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
+            idx0 = jax.tree.map(lambda x: x[b0], batch.index)
+            q0 = jax.tree.map(lambda x: x[b0, s0], batch.queries)
+            single = jax.jit(score_subgoal)
+            jax.block_until_ready(single(idx0, q0, p))
+            ts = []
+            for _ in range(5):
+                t0 = time.perf_counter()
+                jax.block_until_ready(single(idx0, q0, p))
+                ts.append(time.perf_counter() - t0)
+            timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
+            for (ep, kk, goal, sg), sl in zip(bmeta.items, bmeta.slots):
+                if sl is not None:
+                    cand_of[(ep.id, kk)] = [int(n) for n, s in zip(top_n[sl], top_s[sl]) if np.isfinite(s) and s > -1e8]
+    elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
+        t_total, n_total = 0.0, 0
+        for b, meta in enumerate(bank.metas):
+            mine = [it for it in items if it[0].scene == meta.scene and it[3] is not None]
+            if not mine or meta.num_nodes == 0:
+                continue
+            scene = by_name[meta.scene]
+            objs, phrases = node_slots(meta, scene)
+            mem = TextMemory(tuple(meta.captions), tuple(tuple(p) for p in phrases))
+            model = (NaiveRAG if spec.retrieval == "remembr" else BASELINES[spec.retrieval])(mem, embedder)
+            t0 = time.perf_counter()
+            s = np.asarray(model.scores([it[3].text or it[0].instruction for it in mine]))[:, : meta.num_nodes]
+            if spec.retrieval == "remembr":  # ReMEmbR's memory keeps positions: a position query adds a term
+                pos = np.asarray(bank.memory.position[b, : meta.num_nodes, :2])
+                for q, it in enumerate(mine):
+                    if it[3].location is not None:
+                        d2 = np.sum((pos - [it[3].location.x, it[3].location.y]) ** 2, 1)
+                        s[q] += np.exp(-d2 / (2 * cfg.retrieval.sigma_loc**2))
+            t_total += time.perf_counter() - t0
+            n_total += len(mine)
+            for it, row in zip(mine, s):
+                cand_of[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
+        timing["retrieval_ms_single"] = timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
+    elif spec.retrieval == "oracle":
+        for ep, kk, goal, sg in items:
+            b = names.index(ep.scene)
+            gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
+            node = _oracle_node(bank, b, gidx)
+            cand_of[(ep.id, kk)] = [node] if node >= 0 else []
+    for ep, kk, goal, sg in items:
+        per_ep[ep.id].append(cand_of.get((ep.id, kk), []))
+    return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Order planning (exact over permutations: episodes have at most a handful of goals)
+
+
+def plan_order(cost: np.ndarray, start: int, nodes: Sequence[int], goals: Sequence[int], strict: bool, lam: float,
+               optimal: bool) -> list[int]:
+    """Visiting order of `goals` (their target nodes `nodes`) from node `start`.
+
+    Objective (paper, Route Planning): path cost + lam * (pairs visited against the instruction order);
+    free-order episodes use lam = 0. Exact for up to 7 goals, nearest-neighbour beyond.
+    """
+    goals = list(goals)
+    if not optimal or len(goals) <= 1:
+        return goals
+    node = dict(zip(goals, nodes))
+
+    def total(order):
+        c, cur = 0.0, start
+        for g in order:
+            c += cost[cur, node[g]]
+            cur = node[g]
+        inv = sum(1 for i in range(len(order)) for j in range(i + 1, len(order)) if order[i] > order[j]) if strict else 0
+        return c + lam * inv
+
+    if len(goals) <= 7:
+        return list(min(itertools.permutations(goals), key=total))
+    out, cur, left = [], start, set(goals)
+    while left:
+        g = min(left, key=lambda x: cost[cur, node[x]])
+        out.append(g)
+        left.remove(g)
+        cur = node[g]
+    return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# The closed loop
+
+
+@dataclasses.dataclass
+class EpisodeState:
+    e: int
+    ep: Episode
+    b: int  # scene index in the bank
+    s: int  # scene index in the executor
+    subgoals: tuple | None
+    cands: list  # per goal candidate node lists
+    cptr: list  # per goal: index of the current candidate
+    rejected: list  # per goal: candidates rejected so far
+    remaining: list  # goals still to visit, in planned order
+    node: int  # graph node the robot is at (or nearest to)
+    status: list  # per goal: pending | found | wrong | failed:<reason>
+    declarations: list = dataclasses.field(default_factory=list)
+    steps: int = 0
+    look_steps: int = 0
+    length: float = 0.0
+    done: bool = False
+    reason: str = ""
+    leg: tuple | None = None  # (kind, goal, payload)
+    expl_t: int = 0  # ETPNav-style: exploration record reached
+    skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
+    penetration: float = 0.0
+    planned: list = dataclasses.field(default_factory=list)  # the first plan's order
+
+
+class Loop:
+    """Host state machine of the episode loop; each phase hands one leg per episode to the executor."""
+
+    def __init__(self, spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], cfg: Config, executor: Executor,
+                 streams: dict | None):
+        self.spec, self.bank, self.cfg, self.ex = spec, bank, cfg, executor
+        self.scenes = {s.name: s for s in scenes}
+        self.facts = {s.name: SceneFacts.build(s, cfg.episodes) for s in scenes}
+        self.pos = np.asarray(bank.memory.position)[..., :2]
+        self.mask = np.asarray(bank.memory.node_mask)
+        self.cost = np.asarray(bank.memory.path_cost)
+        self.pred = np.asarray(bank.memory.path_pred)
+        self.euclid = np.asarray(bank.memory.distance)
+        self.streams = streams or {}
+        self._seen: dict = {}
+        self.look_cost = int(math.ceil(2 * math.pi / cfg.sim.max_yaw_rate / executor.control_dt))
+
+    # -- helpers
+    def nearest(self, b: int, xy) -> int:
+        d = np.linalg.norm(self.pos[b] - np.asarray(xy)[None], axis=1)
+        d[~self.mask[b]] = np.inf
+        return int(np.argmin(d))
+
+    def order_cost(self, b):
+        return self.euclid[b] if self.spec.straight else self.cost[b]
+
+    def current(self, st: EpisodeState, g: int) -> int | None:
+        c = st.cands[g]
+        if st.rejected[g] > self.cfg.eval.retries or st.cptr[g] >= len(c):
+            return None
+        return c[st.cptr[g]]
+
+    def replan(self, st: EpisodeState) -> None:
+        """Re-solves the order of the remaining goals from the robot's node with their current candidates."""
+        if st.ep.order == "strict" or not self.spec.optimal_order:
+            st.remaining = sorted(st.remaining)  # the instruction's order
+            return
+        live = [g for g in st.remaining if self.current(st, g) is not None]
+        dead = [g for g in st.remaining if g not in live]
+        nodes = [self.current(st, g) for g in live]
+        st.remaining = plan_order(self.order_cost(st.b), st.node, nodes, live, False, 0.0, True) + dead
+
+    def reject(self, st: EpisodeState, g: int, why: str) -> None:
+        st.cptr[g] += 1
+        st.rejected[g] += 1
+        if self.current(st, g) is None:
+            st.status[g] = f"failed:{why}"
+            st.remaining.remove(g)
+        self.replan(st)
+
+    def goal_object(self, st: EpisodeState, g: int):
+        sc = self.scenes[st.ep.scene]
+        oid = st.ep.goals[g]
+        return next((o for o in sc.objects if o.id == oid), None)
+
+    # -- deciding the next leg
+    def next_leg(self, st: EpisodeState, pose: np.ndarray) -> tuple | None:
+        """(kind, goal, payload, waypoints (n, 2)) or None when the episode is over."""
+        while not st.done:
+            if st.leg is not None and st.leg[0] in ("approach", "explore"):
+                return st.leg  # continuing multi-part legs are re-issued by the reflect step
+            if not st.remaining:
+                st.done, st.reason = True, st.reason or "completed"
+                return None
+            g = st.remaining[0]
+            if st.subgoals is None or g >= len(st.subgoals):
+                st.status[g] = "failed:parse"
+                st.remaining.remove(g)
+                continue
+            if self.spec.retrieval == "etpnav":
+                return self.etp_leg(st, g, pose)
+            node = self.current(st, g)
+            if node is None:
+                st.status[g] = "failed:no_candidate"
+                st.remaining.remove(g)
+                continue
+            if self.spec.straight:
+                pts = self.pos[st.b][[node]]
+            else:
+                path = reconstruct_path(self.pred[st.b], st.node, node)
+                if not path:
+                    self.reject(st, g, "unreachable")
+                    continue
+                pts = self.pos[st.b][path]
+            return ("nav", g, node, pts)
+        return None
+
+    def etp_leg(self, st: EpisodeState, g: int, pose) -> tuple | None:
+        stream = self.streams.get(st.ep.scene)
+        if stream is None:
+            raise UserError(f"etpnav needs the exploration stream of scene '{st.ep.scene}' (RUN/explore/streams)")
+        sg = st.subgoals[g]
+        facts = self.facts[st.ep.scene]
+        T = len(stream.t)
+
+        key = (st.e, g)
+        if key not in self._seen:  # records where some visible object passes the check, and that object
+            allv = list(range(len(facts.scene.objects)))
+            cand = np.zeros(stream.visible.shape[1], bool)
+            cand[[o for o in allv if o in set(confirm(facts, sg, allv, self.cfg.episodes.location_radius))]] = True
+            hits = {}
+            for r in np.flatnonzero(stream.visible[:, cand].any(1)):
+                vis = [int(i) for i in np.flatnonzero(stream.visible[r])]
+                ok = confirm(facts, sg, vis, self.cfg.episodes.location_radius)
+                if ok:
+                    hits[int(r)] = ok
+            self._seen[key] = hits
+
+        def seen(r):
+            ok = [o for o in self._seen[key].get(r, []) if (g, o) not in st.skip]
+            return ok[0] if ok else None
+
+        # The online map already holds everything seen up to expl_t: go back there.
+        for r in sorted(x for x in self._seen[key] if x <= st.expl_t):
+            o = seen(r)
+            if o is not None:
+                a, bnode = self.nearest(st.b, pose[:2]), self.nearest(st.b, stream.pose[r, :2])
+                path = reconstruct_path(self.pred[st.b], a, bnode) or [a]
+                pts = np.concatenate([self.pos[st.b][path], stream.pose[r : r + 1, :2]])
+                return ("goto_seen", g, o, pts)
+        for r in sorted(x for x in self._seen[key] if x > st.expl_t):
+            o = seen(r)
+            if o is not None:
+                return ("explore", g, (r, o), self.thin(stream.pose[st.expl_t : r + 1, :2]))
+        if st.expl_t < T - 1:
+            return ("explore", g, (T - 1, None), self.thin(stream.pose[st.expl_t :, :2]))
+        st.status[g] = "failed:not_observed"
+        st.remaining.remove(g)
+        return self.next_leg(st, pose)
+
+    def thin(self, xy: np.ndarray) -> np.ndarray:
+        keep, last = [0], xy[0]
+        for i in range(1, len(xy)):
+            if np.linalg.norm(xy[i] - last) >= THIN_M:
+                keep.append(i)
+                last = xy[i]
+        if keep[-1] != len(xy) - 1:
+            keep.append(len(xy) - 1)
+        return xy[keep][: self.ex.path_points]
+
+    def approach_points(self, st: EpisodeState, o: int, pose) -> np.ndarray:
+        obj = self.scenes[st.ep.scene].objects[o]
+        c = np.asarray(obj.position[:2])
+        half = np.asarray(obj.size[:2]) / 2
+        near = np.clip(pose[:2], c - half, c + half)  # closest point of the footprint
+        v = pose[:2] - near
+        n = np.linalg.norm(v)
+        gap = self.cfg.eval.approach_gap + self.cfg.sim.robot_radius
+        goal = pose[:2] if n <= gap else near + v / n * gap
+        return np.asarray([goal], np.float32)
+
+    # -- after a leg
+    def after_leg(self, st: EpisodeState, leg: tuple, pose: np.ndarray, arrived: bool, visible: np.ndarray) -> None:
+        kind, g, payload, _ = leg
+        sc = self.scenes[st.ep.scene]
+        if kind == "nav":
+            st.node = payload if arrived and not self.spec.straight else self.nearest(st.b, pose[:2])
+            st.look_steps += self.look_cost
+            if self.spec.retrieval == "oracle":  # knows the true goal position: no check needed
+                gobj = self.goal_object(st, g)
+                ok = [sc.objects.index(gobj)] if gobj is not None else []
+            else:
+                ok = confirm(self.facts[st.ep.scene], st.subgoals[g], [int(i) for i in np.flatnonzero(visible)],
+                             self.cfg.episodes.location_radius)
+            ok = [o for o in ok if (g, o) not in st.skip]
+            if not ok:
+                self.reject(st, g, "not_confirmed" if arrived else "stuck")
+                st.leg = None
+                return
+            o = min(ok, key=lambda i: box_distance(sc.objects[i], pose[:2]))
+            st.leg = ("approach", g, o, self.approach_points(st, o, pose))
+        elif kind in ("explore", "goto_seen"):
+            if kind == "explore":
+                r, o = payload
+                target = self.streams[st.ep.scene].pose[r, :2]
+                if np.linalg.norm(pose[:2] - target) > 1.0 and st.steps < self.cfg.eval.max_steps:
+                    # a long replay is split into buffer-sized parts: continue from the record reached
+                    t_new = self._record_near(st, pose, r)
+                    st.leg = None
+                    if t_new <= st.expl_t:  # no headway along the replayed exploration
+                        st.status[g] = "failed:stuck"
+                        st.remaining.remove(g)
+                    st.expl_t = max(t_new, st.expl_t)
+                    return
+                st.expl_t = r
+                st.look_steps += self.look_cost
+                if o is None:
+                    st.status[g] = "failed:not_observed"
+                    st.remaining.remove(g)
+                    st.leg = None
+                    return
+            else:
+                o = payload
+            st.leg = ("approach", g, o, self.approach_points(st, o, pose))
+        elif kind == "approach":
+            obj = sc.objects[payload]
+            st.leg = None
+            if box_distance(obj, pose[:2]) <= self.cfg.eval.found_radius:
+                gobj = self.goal_object(st, g)
+                correct = gobj is not None and box_distance(gobj, pose[:2]) <= self.cfg.eval.found_radius
+                st.declarations.append({"goal": g, "object": obj.id, "correct": bool(correct),
+                                        "step": st.steps + st.look_steps, "xy": [round(float(x), 3) for x in pose[:2]]})
+                st.status[g] = "found" if correct else "wrong"
+                st.remaining.remove(g)
+            else:
+                st.skip.add((g, payload))
+                if self.spec.retrieval == "etpnav":
+                    return
+                self.reject(st, g, "blocked")
+
+    def _record_near(self, st, pose, r_end) -> int:
+        stream = self.streams[st.ep.scene]
+        lo = st.expl_t
+        d = np.linalg.norm(stream.pose[lo : r_end + 1, :2] - pose[None, :2], axis=1)
+        return lo + int(np.argmin(d))
+
+
+def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
+                        method: str | None = None, streams: dict | None = None, progress: bool = False,
+                        executor: Executor | None = None) -> tuple[list[dict], dict]:
+    """Runs one method over every episode; returns per-episode rows and the summary."""
+    from ragnav_jax.evaluation.metrics import episode_row, summarise
+
+    method = method or cfg.eval.method
+    spec = method_spec(method)
+    names = list(bank.names)
+    unknown = sorted({ep.scene for ep in episodes} - set(names))
+    if unknown:
+        raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
+    used = [s for s in scenes if s.name in {ep.scene for ep in episodes}]
+    ex = executor or make_executor(used, cfg)
+    loop = Loop(spec, bank, scenes, cfg, ex, streams)
+    # 1. instruction -> plan, for all episodes (host wall clock: parsing, embedding, retrieval, order)
+    t0 = time.perf_counter()
+    cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg)
+    oracle = retrieve_candidates(method_spec("oracle"), bank, scenes, episodes, embedder, cfg) if method != "oracle" else cands
+    states = []
+    for e, ep in enumerate(episodes):
+        b = names.index(ep.scene)
+        sc = loop.scenes[ep.scene]
+        G = len(ep.goals)
+        start = loop.nearest(b, sc.start.position[:2])
+        st = EpisodeState(e, ep, b, ex.names.index(ep.scene), cands.subgoals[e], cands.nodes[e] + [[]] * (G - len(cands.nodes[e])),
+                          [0] * G, [0] * G, list(range(G)), start, ["pending"] * G)
+        if spec.retrieval != "etpnav":
+            loop.replan(st)
+        st.planned = list(st.remaining)
+        states.append(st)
+    task_time = (time.perf_counter() - t0) / max(len(episodes), 1)
+    # 2./3. execute and reflect, a batch of episodes at a time
+    B = min(cfg.eval.batch_size, max(len(states), 1))
+    bar = _progress(len(states), progress, method)
+    for c0 in range(0, len(states), B):
+        chunk = states[c0 : c0 + B]
+        _run_chunk(loop, chunk, B, cfg)
+        bar(len(chunk))
+    bar(0, close=True)
+    rows = [episode_row(st, loop, oracle.nodes[st.e], cands, cfg, method) for st in states]
+    summary = summarise(rows, cands.timing, task_time, method)
+    return rows, summary
+
+
+def _progress(total: int, on: bool, label: str):
+    if not on:
+        return lambda n, close=False: None
+    from tqdm import tqdm
+
+    bar = tqdm(total=total, desc=f"eval {label}", unit="ep")
+
+    def step(n, close=False):
+        bar.update(n)
+        if close:
+            bar.close()
+
+    return step
+
+
+def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
+    ex = loop.ex
+    P = ex.path_points
+    E = len(chunk)
+    scene_idx = np.zeros(B, np.int32)
+    start = np.zeros((B, 3), np.float32)
+    for i, st in enumerate(chunk):
+        sc = loop.scenes[st.ep.scene]
+        scene_idx[i] = st.s
+        start[i] = (sc.start.position[0], sc.start.position[1], sc.start.yaw)
+    if E < B:
+        scene_idx[E:], start[E:] = scene_idx[0], start[0]
+    sidx = jnp.asarray(scene_idx)
+    d = ex.init(sidx, jnp.asarray(start))
+    poses = start.copy()
+    while True:
+        legs = [None] * E
+        for i, st in enumerate(chunk):
+            if not st.done and st.steps + st.look_steps >= cfg.eval.max_steps:
+                st.done, st.reason = True, "budget"
+                for g in list(st.remaining):
+                    st.status[g] = "failed:budget"
+                st.remaining = []
+            legs[i] = None if st.done else loop.next_leg(st, poses[i])
+        if not any(legs):
+            break
+        pts = np.zeros((B, P, 2), np.float32)
+        n = np.zeros(B, np.int32)
+        allow = np.zeros(B, np.int32)
+        for i, leg in enumerate(legs):
+            if leg is not None:
+                pts[i], n[i] = pad_points(leg[3], P)
+                st = chunk[i]
+                allow[i] = max(min(cfg.eval.leg_max_steps, cfg.eval.max_steps - st.steps - st.look_steps), 0)
+        res = ex.run(sidx, d, jnp.asarray(pts), jnp.asarray(n), jnp.asarray(allow))
+        d = res.d
+        vis, _ = ex.look(sidx, d)
+        poses = np.asarray(d.qpos[:, :3])
+        arrived, steps, length = np.asarray(res.arrived), np.asarray(res.steps), np.asarray(res.length)
+        pen, vis = np.asarray(res.penetration), np.asarray(vis)
+        for i, leg in enumerate(legs):
+            if leg is None:
+                continue
+            st = chunk[i]
+            st.steps += int(steps[i])
+            st.length += float(length[i])
+            st.penetration = max(st.penetration, float(pen[i]))
+            loop.after_leg(st, leg, poses[i], bool(arrived[i]), vis[i])

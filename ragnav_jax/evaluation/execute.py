@@ -1,0 +1,180 @@
+"""Batched MJX execution of navigation legs: every episode drives its current leg in one jitted call.
+
+A *leg* is a padded waypoint list (the topological path to a retrieved node, a straight line, or an
+approach to a seen object). `Executor.run` drives all episodes' legs together: one `lax.while_loop`
+over control steps whose body is the per-episode kernel (waypoint controller `sim.controller.follow`,
+`substeps` MJX physics steps) vmapped over episodes, each with its scene's geometry swapped into the
+one padded template (`sim.model.batch_model`). The loop stops when every leg has arrived, stalled or
+spent its step allowance; nothing runs on the host per step. `Executor.look` is the look-around on
+arrival: camera visibility at `look_headings` headings from the robot's simulated position.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from typing import Sequence
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+from flax import struct
+from mujoco import mjx
+
+from ragnav_jax.config import Config
+from ragnav_jax.sim.controller import Path, follow, physics
+from ragnav_jax.sim.model import SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts
+from ragnav_jax.sim.sensors import camera_visibility
+from ragnav_jax.world.scene import Scene
+
+PROGRESS_EPS = 0.002  # metres per control step below which a step counts as no progress
+
+
+@struct.dataclass
+class SceneTables:
+    """Per-scene arrays of a scene set (leading axis S)."""
+
+    geometry: object  # SceneGeometry (S, G, ...)
+    obj_pos: jax.Array  # (S, O, 3) float32 box centres
+    obj_size: jax.Array  # (S, O, 3) float32 full extents
+    obj_mask: jax.Array  # (S, O) bool
+
+
+@struct.dataclass
+class LegResult:
+    """Outcome of one batch of legs (leading axis E)."""
+
+    d: mjx.Data
+    arrived: jax.Array  # (E,) bool within arrive_tol of the last waypoint
+    steps: jax.Array  # (E,) int32 control steps driven
+    length: jax.Array  # (E,) float32 metres driven (simulated trajectory)
+    penetration: jax.Array  # (E,) float32 deepest contact penetration
+
+
+@dataclasses.dataclass(frozen=True)
+class Executor:
+    """Compiled-once leg runner and look-around for scenes that fit its template."""
+
+    model: SimModel
+    tables: SceneTables
+    names: tuple[str, ...]
+    path_points: int
+    control_dt: float
+    run: object  # jitted (scene_idx (E,), d, points (E,P,2), n (E,), allowance (E,)) -> LegResult
+    look: object  # jitted (scene_idx (E,), d) -> (visible (E, O) bool, distance (E, O) float32)
+    init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
+
+
+def make_executor(scenes: Sequence[Scene], cfg: Config) -> Executor:
+    walls, objects = slot_counts(scenes)
+    return _executor(tuple(scenes), walls, objects, cfg)
+
+
+def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
+    sim, ev = cfg.sim, cfg.eval
+    model = build_template(walls, objects, sim)
+    O = model.layout.objects
+    geo = scene_geometry(scenes, model)
+    pos = np.zeros((len(scenes), O, 3), np.float32)
+    size = np.full((len(scenes), O, 3), 0.01, np.float32)
+    mask = np.zeros((len(scenes), O), bool)
+    for s, sc in enumerate(scenes):
+        for j, o in enumerate(sc.objects):
+            pos[s, j], size[s, j], mask[s, j] = o.position, o.size, True
+    tables = SceneTables(geo, jnp.asarray(pos), jnp.asarray(size), jnp.asarray(mask))
+    obj_geom = jnp.arange(model.layout.obj_geom0, model.layout.obj_geom0 + O, dtype=jnp.int32)
+    rb = model.layout.robot_body
+    lookahead, tol, stall_max = cfg.explore.lookahead, ev.arrive_tol, ev.stall_steps
+    headings = jnp.asarray(np.arange(ev.look_headings) * 2 * math.pi / ev.look_headings, jnp.float32)
+
+    def models(scene_idx):
+        g = jax.tree.map(lambda x: x[scene_idx], tables.geometry)
+        return batch_model(model.mx, g)
+
+    def one_step(m, d, path, active, steps, length, stall, pen):
+        pose = d.qpos[:3]
+        cmd, path2 = follow(path, pose, lookahead, sim.max_speed, sim.max_yaw_rate)
+        d2, p = physics(m, d, cmd, sim.substeps)
+        moved = jnp.linalg.norm(d2.qpos[:2] - pose[:2])
+        keep = lambda a, b: jax.tree.map(lambda x, y: jnp.where(active, x, y), a, b)  # noqa: E731
+        d = keep(d2, d)
+        path = keep(path2, path)
+        steps = steps + active.astype(jnp.int32)
+        length = length + jnp.where(active, moved, 0.0)
+        stall = jnp.where(active & (moved < PROGRESS_EPS), stall + 1, jnp.where(active, 0, stall))
+        pen = jnp.maximum(pen, jnp.where(active, p, 0.0))
+        return d, path, steps, length, stall, pen
+
+    def arrived_of(d, path):
+        last = path.points[jnp.maximum(path.n - 1, 0)]
+        return (path.n == 0) | (jnp.linalg.norm(d.qpos[:2] - last) < tol)
+
+    @jax.jit
+    def run(scene_idx, d, points, n, allowance):
+        m, in_axes = models(scene_idx)
+        E = scene_idx.shape[0]
+        paths = jax.vmap(Path.of)(points, n)
+        zeros_i = jnp.zeros(E, jnp.int32)
+
+        def status(c):
+            d, paths, steps, length, stall, pen = c
+            arrived = jax.vmap(arrived_of)(d, paths)
+            return arrived, ~arrived & (steps < allowance) & (stall < stall_max)
+
+        def cond(c):
+            return jnp.any(status(c[1:])[1])
+
+        def body(c):
+            t, d, paths, steps, length, stall, pen = c
+            active = status((d, paths, steps, length, stall, pen))[1]
+            out = jax.vmap(one_step, in_axes=(in_axes, 0, 0, 0, 0, 0, 0, 0))(m, d, paths, active, steps, length, stall, pen)
+            return (t + 1, *out)
+
+        c = (jnp.int32(0), d, paths, zeros_i, jnp.zeros(E, jnp.float32), zeros_i, jnp.zeros(E, jnp.float32))
+        c = jax.lax.while_loop(cond, body, c)
+        _, d, paths, steps, length, stall, pen = c
+        arrived = jax.vmap(arrived_of)(d, paths)
+        return LegResult(d, arrived, steps, length, pen)
+
+    @jax.jit
+    def look(scene_idx, d):
+        m, in_axes = models(scene_idx)
+
+        def one(m, d, op, osz, om):
+            def at(h):
+                dd = d.replace(qpos=d.qpos.at[2].set(h))
+                return camera_visibility(m, dd, op, osz, om, obj_geom, sim, rb)
+
+            v = jax.vmap(at)(headings)
+            return jnp.any(v.visible, 0), v.distance[0]
+
+        return jax.vmap(one, in_axes=(in_axes, 0, 0, 0, 0))(
+            m, d, tables.obj_pos[scene_idx], tables.obj_size[scene_idx], tables.obj_mask[scene_idx])
+
+    @jax.jit
+    def init(scene_idx, start):
+        m, in_axes = models(scene_idx)
+        return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
+
+    return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
+                    run, look, init)
+
+
+def pad_points(points: np.ndarray, P: int) -> tuple[np.ndarray, int]:
+    """(P, 2) waypoints (the last repeated) and the count; longer lists are thinned evenly, ends kept."""
+    points = np.asarray(points, np.float32).reshape(-1, 2)
+    n = len(points)
+    if n == 0:
+        return np.zeros((P, 2), np.float32), 0
+    if n > P:
+        keep = np.unique(np.round(np.linspace(0, n - 1, P)).astype(int))
+        points, n = points[keep], len(keep)
+    out = np.repeat(points[-1:], P, 0)
+    out[:n] = points
+    return out, n
+
+
+@functools.lru_cache(maxsize=4)
+def _cached(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
+    return _executor(scenes, walls, objects, cfg)

@@ -1,0 +1,159 @@
+"""Per-episode navigation metrics and their summary.
+
+Definitions (per episode; the summary averages over episodes, and over each modality in `by_modality`):
+- success: every goal declared FOUND within `eval.found_radius` of its box on the simulated trajectory,
+  in the instruction's order for strict episodes, within the step budget.
+- progress (MultiON): share of goals found; strict episodes count only the in-order prefix.
+- travel_distance_m: length of the simulated trajectory (MJX robot positions per control step).
+- planned_rule1_m / planned_rule2_m: the first plan's route over the map, Rule 1 (edge distances) and
+  Rule 2 (Euclidean between consecutive node coordinates); straight-line planners: the straight segments.
+- oracle_m: the oracle's shortest route (true goal nodes, optimal allowed order, Rule 1 from the start node).
+- spl = success * oracle_m / max(travel, oracle_m); ppl = progress * oracle_m / max(travel, oracle_m).
+- retrieval_accuracy: top-1 candidate observes the goal's instance (instance-level rule of
+  retrieval/evaluate.py); null for methods without retrieval (etpnav).
+- sim_time_s: control steps (driving plus the look-arounds' turns in place) x control period.
+- task_time_s: host wall clock from instructions to plans (parsing, query embedding, retrieval kernels,
+  order solving), measured over the whole batch and divided by the number of episodes.
+- total_time_s = task_time_s + sim_time_s (the paper's "Total Time" covers both).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter, defaultdict
+
+import numpy as np
+
+from ragnav_jax.memory.paths import reconstruct_path
+
+
+def _route(loop, b: int, start: int, nodes: list[int]) -> tuple[float, float]:
+    """(Rule 1, Rule 2) lengths of the node route start -> nodes[0] -> ... over the map."""
+    r1 = r2 = 0.0
+    cur = start
+    for n in nodes:
+        if n is None or n < 0:
+            continue
+        if loop.spec.straight:
+            seg = float(np.linalg.norm(loop.pos[b][n] - loop.pos[b][cur]))
+            r1 += seg
+            r2 += seg
+        else:
+            path = reconstruct_path(loop.pred[b], cur, n)
+            if not path:
+                continue
+            r1 += float(loop.cost[b][cur, n])
+            r2 += float(sum(np.linalg.norm(loop.pos[b][path[i + 1]] - loop.pos[b][path[i]]) for i in range(len(path) - 1)))
+        cur = n
+    return r1, r2
+
+
+def _oracle_length(loop, st, oracle_nodes: list) -> float:
+    from ragnav_jax.evaluation.episode import plan_order
+
+    b = st.b
+    start = loop.nearest(b, loop.scenes[st.ep.scene].start.position[:2])
+    goals = [g for g, c in enumerate(oracle_nodes) if c and np.isfinite(loop.cost[b][start, c[0]])]
+    nodes = [oracle_nodes[g][0] for g in goals]
+    strict = st.ep.order == "strict"
+    order = plan_order(loop.cost[b], start, nodes, goals, strict, 1e4 if strict else 0.0, True)
+    c, cur = 0.0, start
+    for g in order:
+        c += float(loop.cost[b][cur, oracle_nodes[g][0]])
+        cur = oracle_nodes[g][0]
+    return c
+
+
+def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
+    ep = st.ep
+    G = len(ep.goals)
+    found = [s == "found" for s in st.status]
+    seq = [d["goal"] for d in st.declarations if d["correct"]]
+    in_order = seq == sorted(seq)
+    strict = ep.order == "strict"
+    if strict:
+        prefix = 0
+        for g in range(G):
+            if found[g] and (g == 0 or prefix == g):
+                prefix += 1
+            else:
+                break
+        progress = prefix / G if in_order else sum(1 for i, g in enumerate(seq) if g == i) / G
+    else:
+        progress = sum(found) / G
+    budget_ok = st.steps + st.look_steps <= cfg.eval.max_steps
+    success = all(found) and (in_order or not strict) and budget_ok
+    L = st.length
+    Ls = _oracle_length(loop, st, oracle_nodes)
+    ratio = 1.0 if Ls <= 0 and L <= 0 else Ls / max(L, Ls, 1e-9)
+    sc = loop.scenes[ep.scene]
+    obs = np.asarray(loop.bank.memory.obs_object[st.b])
+    ids = [o.id for o in sc.objects]
+    top1 = []
+    if loop.spec.retrieval == "etpnav":
+        top1 = [None] * G
+    else:
+        for g in range(G):
+            c = cands.nodes[st.e][g] if g < len(cands.nodes[st.e]) else []
+            gidx = ids.index(ep.goals[g]) if ep.goals[g] in ids else -1
+            top1.append(bool(c) and gidx >= 0 and gidx in set(obs[c[0]].tolist()))
+    first = [cands.nodes[st.e][g][0] if g < len(cands.nodes[st.e]) and cands.nodes[st.e][g] else None for g in st.planned]
+    start = loop.nearest(st.b, sc.start.position[:2])
+    r1, r2 = _route(loop, st.b, start, first) if loop.spec.retrieval != "etpnav" else (float("nan"), float("nan"))
+    fails = [s.split(":", 1)[1] for s in st.status if s.startswith("failed")]
+    reason = "success" if success else (
+        "wrong_declaration" if any(s == "wrong" for s in st.status) else
+        (fails[0] if fails else ("order" if not in_order else st.reason or "incomplete")))
+    return {
+        "episode": ep.id, "scene": ep.scene, "modality": ep.modality, "order": ep.order, "method": method,
+        "goals": G, "success": bool(success), "progress": round(progress, 4),
+        "spl": round(float(success) * ratio, 4), "ppl": round(progress * ratio, 4),
+        "travel_distance_m": round(L, 3), "oracle_m": round(Ls, 3),
+        "planned_rule1_m": None if math.isnan(r1) else round(r1, 3),
+        "planned_rule2_m": None if math.isnan(r2) else round(r2, 3),
+        "sim_time_s": round((st.steps + st.look_steps) * loop.ex.control_dt, 2), "steps": st.steps + st.look_steps,
+        "retrieval_top1": top1, "goal_status": st.status, "declarations": st.declarations,
+        "wrong_declarations": sum(not d["correct"] for d in st.declarations),
+        "rejected_candidates": int(sum(st.rejected)), "max_penetration_m": round(st.penetration, 4),
+        "reason": reason,
+    }
+
+
+def _mean(xs) -> float | None:
+    xs = [x for x in xs if x is not None and not (isinstance(x, float) and math.isnan(x))]
+    return round(float(np.mean(xs)), 4) if xs else None
+
+
+def _block(rows: list[dict]) -> dict:
+    top1 = [t for r in rows for t in r["retrieval_top1"] if t is not None]
+    ok = [r for r in rows if r["success"]]
+    return {
+        "episodes": len(rows),
+        "success_rate": _mean([float(r["success"]) for r in rows]),
+        "retrieval_accuracy": _mean([float(t) for t in top1]) if top1 else None,
+        "spl": _mean([r["spl"] for r in rows]),
+        "progress": _mean([r["progress"] for r in rows]),
+        "ppl": _mean([r["ppl"] for r in rows]),
+        "travel_distance_m": _mean([r["travel_distance_m"] for r in rows]),
+        "travel_distance_success_m": _mean([r["travel_distance_m"] for r in ok]),
+        "oracle_m": _mean([r["oracle_m"] for r in rows]),
+        "planned_rule1_m": _mean([r["planned_rule1_m"] for r in rows]),
+        "planned_rule2_m": _mean([r["planned_rule2_m"] for r in rows]),
+        "sim_time_s": _mean([r["sim_time_s"] for r in rows]),
+        "wrong_declarations": int(sum(r["wrong_declarations"] for r in rows)),
+    }
+
+
+def summarise(rows: list[dict], timing: dict, task_time_s: float, method: str) -> dict:
+    out = {"method": method, **_block(rows)}
+    out["retrieval_ms"] = round(timing.get("retrieval_ms_batched", 0.0), 4)
+    out["retrieval_ms_single"] = round(timing.get("retrieval_ms_single", 0.0), 4)
+    out["embed_ms"] = round(timing.get("embed_ms", 0.0), 4)
+    out["task_time_s"] = round(task_time_s, 4)
+    out["total_time_s"] = round(task_time_s + (out["sim_time_s"] or 0.0), 3)
+    by = defaultdict(list)
+    for r in rows:
+        by[r["modality"]].append(r)
+    out["by_modality"] = {m: _block(v) for m, v in sorted(by.items())}
+    out["reasons"] = dict(Counter(r["reason"] for r in rows))
+    return out
