@@ -254,7 +254,11 @@ class ExploreConfig:
     batch_size: int = 8  # scenes explored together in one vmapped call
 
     def __post_init__(self):
-        _check(self.map_resolution > 0, "explore.map_resolution", "must be > 0")
+        _check(
+            0 < self.map_resolution <= 0.5,
+            "explore.map_resolution",
+            "must be in (0, 0.5] metres to resolve 10 cm walls and 1 m doors (the paper's 1.0 m grid is explore.grid_resolution)",
+        )
         ratio = self.grid_resolution / self.map_resolution if self.map_resolution > 0 else 0
         _check(
             ratio >= 1 and abs(ratio - round(ratio)) < 1e-6,

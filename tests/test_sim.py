@@ -11,7 +11,14 @@ from ragnav_jax.config import SimConfig, WorldConfig
 from ragnav_jax.sim import grid as G
 from ragnav_jax.sim.controller import Path, follow
 from ragnav_jax.sim.model import (
-    GEOMETRY_FIELDS, PARK, batch_model, build_template, initial_data, mjx_step, scene_geometry, scene_mj_model,
+    GEOMETRY_FIELDS,
+    PARK,
+    batch_model,
+    build_template,
+    initial_data,
+    mjx_step,
+    scene_geometry,
+    scene_mj_model,
     slot_counts,
 )
 from ragnav_jax.sim.sensors import lidar_angles, lidar_scan
@@ -33,15 +40,15 @@ def template(scenes):
 
 def test_slot_geometry_matches_compiled_models(scenes, template):
     geo = scene_geometry(scenes, template)
-    W, O = template.layout.walls, template.layout.objects
+    W, n_obj = template.layout.walls, template.layout.objects
     for b, s in enumerate(scenes):
-        mj = scene_mj_model(s, W, O, SIM)  # the same slots written as MJCF and compiled by MuJoCo
+        mj = scene_mj_model(s, W, n_obj, SIM)  # the same slots written as MJCF and compiled by MuJoCo
         for k in GEOMETRY_FIELDS:
             np.testing.assert_allclose(np.asarray(getattr(geo, k)[b]), getattr(mj, k), atol=2e-6, err_msg=k)
         # Unused slots are parked far below the house.
         pos = np.asarray(geo.geom_pos[b])
         used = 1 + np.r_[np.arange(len(s.walls)), W + np.arange(len(s.objects))]
-        parked = np.setdiff1d(np.arange(1, 1 + W + O), used)
+        parked = np.setdiff1d(np.arange(1, 1 + W + n_obj), used)
         assert np.all(pos[parked, 2] <= -PARK + 1e-3)
     assert len(scenes[1].walls) < W  # the small scene does use parked slots
 
@@ -71,10 +78,10 @@ def test_lidar_matches_c_engine_in_a_batched_model(scenes, template):
 
     got = np.asarray(jax.jit(jax.vmap(scans, in_axes=(axes, 0)))(m, jnp.asarray(poses)))
     assert got.shape == (len(scenes), 6, SIM.lidar_rays)
-    W, O = template.layout.walls, template.layout.objects
+    W, n_obj = template.layout.walls, template.layout.objects
     worst = 0.0
     for b, s in enumerate(scenes):
-        mj = scene_mj_model(s, W, O, SIM)
+        mj = scene_mj_model(s, W, n_obj, SIM)
         d = mujoco.MjData(mj)
         gid = np.zeros(1, np.int32)
         for i, (x, y, yaw) in enumerate(poses[b]):

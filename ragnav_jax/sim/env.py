@@ -14,7 +14,7 @@ share of max_speed, yaw rate as a share of max_yaw_rate.
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax
 import jax.numpy as jnp
@@ -56,15 +56,15 @@ class NavEnv(Env):
         self.model = build_template(*slot_counts(scenes), sim)
         self.geometry = scene_geometry(scenes, self.model)  # (S, G, ...)
         self.points = jnp.asarray(np.stack([reachable_points(s, sim.robot_radius) for s in scenes]))  # (S, K, 2)
-        O = self.model.layout.objects
-        pos = np.zeros((len(scenes), O, 3), np.float32)
-        size = np.zeros((len(scenes), O, 3), np.float32)
-        mask = np.zeros((len(scenes), O), bool)
+        n_obj = self.model.layout.objects
+        pos = np.zeros((len(scenes), n_obj, 3), np.float32)
+        size = np.zeros((len(scenes), n_obj, 3), np.float32)
+        mask = np.zeros((len(scenes), n_obj), bool)
         for b, s in enumerate(scenes):
             for i, o in enumerate(s.objects):
                 pos[b, i], size[b, i], mask[b, i] = o.position, o.size, True
         self.obj_pos, self.obj_size, self.obj_mask = jnp.asarray(pos), jnp.asarray(size), jnp.asarray(mask)
-        self.obj_geom = jnp.arange(self.model.layout.obj_geom0, self.model.layout.obj_geom0 + O, dtype=jnp.int32)
+        self.obj_geom = jnp.arange(self.model.layout.obj_geom0, self.model.layout.obj_geom0 + n_obj, dtype=jnp.int32)
         self.angles = jnp.asarray(lidar_angles(sim))
         self.num_scenes = len(scenes)
 

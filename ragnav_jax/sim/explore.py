@@ -18,7 +18,7 @@ import dataclasses
 import functools
 import math
 import zlib
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax
 import jax.numpy as jnp
@@ -30,7 +30,13 @@ from ragnav_jax.config import Config, ExploreConfig, SimConfig
 from ragnav_jax.sim import grid as G
 from ragnav_jax.sim.controller import Path, follow, physics
 from ragnav_jax.sim.model import (
-    SceneGeometry, SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts,
+    SceneGeometry,
+    SimModel,
+    batch_model,
+    build_template,
+    initial_data,
+    scene_geometry,
+    slot_counts,
 )
 from ragnav_jax.sim.sensors import camera_visibility, lidar_angles, lidar_scan, odometry
 from ragnav_jax.sim.stream import ExplorationStream
@@ -45,9 +51,9 @@ class SceneInputs:
     start: jax.Array  # (3,) float32 x, y, yaw
     origin: jax.Array  # (2,) float32 map origin
     inside: jax.Array  # (H, W) bool map cells within the scene's padded bounds
-    obj_pos: jax.Array  # (O, 3) float32 box centres
-    obj_size: jax.Array  # (O, 3) float32 full extents
-    obj_mask: jax.Array  # (O,) bool
+    obj_pos: jax.Array  # (n_obj, 3) float32 box centres
+    obj_size: jax.Array  # (n_obj, 3) float32 full extents
+    obj_mask: jax.Array  # (n_obj,) bool
     key: jax.Array  # (2,) uint32 PRNG key of the scene (odometry noise)
 
 
@@ -80,9 +86,9 @@ class ExploreState:
     rec_pose: jax.Array  # (T, 4) float32 odometry x, y, z, yaw
     rec_true: jax.Array  # (T, 3) float32 true x, y, yaw
     rec_lidar: jax.Array  # (T, L) float32
-    rec_visible: jax.Array  # (T, O) bool
-    rec_distance: jax.Array  # (T, O) float32
-    rec_bearing: jax.Array  # (T, O) float32
+    rec_visible: jax.Array  # (T, n_obj) bool
+    rec_distance: jax.Array  # (T, n_obj) float32
+    rec_bearing: jax.Array  # (T, n_obj) float32
 
 
 @dataclasses.dataclass(frozen=True)
@@ -101,7 +107,7 @@ class Explorer:
 def make_explorer(model: SimModel, spec: G.GridSpec, sim: SimConfig, cfg: ExploreConfig) -> Explorer:
     """Builds the jitted batched exploration loop for a template and a grid spec."""
     layout = model.layout
-    O = layout.objects
+    n_obj = layout.objects
     H, W = spec.shape
     Hc, Wc = spec.coarse_shape
     k = spec.k
@@ -110,7 +116,7 @@ def make_explorer(model: SimModel, spec: G.GridSpec, sim: SimConfig, cfg: Explor
     np_angles = lidar_angles(sim)
     angles = jnp.asarray(np_angles)
     L = angles.shape[0]
-    obj_geom = jnp.arange(layout.obj_geom0, layout.obj_geom0 + O, dtype=jnp.int32)
+    obj_geom = jnp.arange(layout.obj_geom0, layout.obj_geom0 + n_obj, dtype=jnp.int32)
     control_dt = sim.timestep * sim.substeps
     sweep = math.radians(cfg.look_sweep_deg)
     sweep_steps = max(cfg.look_period / control_dt, 1.0)
@@ -128,8 +134,8 @@ def make_explorer(model: SimModel, spec: G.GridSpec, sim: SimConfig, cfg: Explor
             finished=jnp.array(False), steps=jnp.int32(0), path_length=f32(0), max_penetration=f32(0),
             plans=jnp.int32(0), given_up=jnp.int32(0),
             rec_t=jnp.zeros(T, jnp.int32), rec_active=jnp.zeros(T, b), rec_pose=jnp.zeros((T, 4), f32),
-            rec_true=jnp.zeros((T, 3), f32), rec_lidar=jnp.zeros((T, L), f32), rec_visible=jnp.zeros((T, O), b),
-            rec_distance=jnp.zeros((T, O), f32), rec_bearing=jnp.zeros((T, O), f32),
+            rec_true=jnp.zeros((T, 3), f32), rec_lidar=jnp.zeros((T, L), f32), rec_visible=jnp.zeros((T, n_obj), b),
+            rec_distance=jnp.zeros((T, n_obj), f32), rec_bearing=jnp.zeros((T, n_obj), f32),
         )
 
     def sense(m, inp: SceneInputs, s: ExploreState, t) -> ExploreState:
@@ -268,11 +274,11 @@ def scene_key(seed: int, name: str) -> np.ndarray:
 
 def scene_inputs(scenes: Sequence[Scene], explorer: Explorer, seed: int) -> SceneInputs:
     """Stacked (B, ...) explorer inputs of scenes."""
-    O = explorer.model.layout.objects
+    n_obj = explorer.model.layout.objects
     frames = [G.scene_frame(s, explorer.spec) for s in scenes]
-    obj_pos = np.zeros((len(scenes), O, 3), np.float32)
-    obj_size = np.zeros((len(scenes), O, 3), np.float32)
-    obj_mask = np.zeros((len(scenes), O), bool)
+    obj_pos = np.zeros((len(scenes), n_obj, 3), np.float32)
+    obj_size = np.zeros((len(scenes), n_obj, 3), np.float32)
+    obj_mask = np.zeros((len(scenes), n_obj), bool)
     for b, s in enumerate(scenes):
         for i, o in enumerate(s.objects):
             obj_pos[b, i], obj_size[b, i], obj_mask[b, i] = o.position, o.size, True
@@ -329,14 +335,14 @@ def cut_results(scenes: Sequence[Scene], explorer: Explorer, s: ExploreState) ->
     angles = lidar_angles(explorer.sim)
     out = []
     for b, scene in enumerate(scenes):
-        O = len(scene.objects)
+        n_obj = len(scene.objects)
         _, inside = G.scene_frame(scene, explorer.spec)
         h, w = int(inside.any(1).sum()), int(inside.any(0).sum())
         keep = s.rec_active[b]
         stream = ExplorationStream(
             scene=scene.name, t=s.rec_t[b][keep].astype(np.int32), pose=s.rec_pose[b][keep],
-            lidar=s.rec_lidar[b][keep], lidar_angles=angles, visible=s.rec_visible[b][keep][:, :O],
-            distance=s.rec_distance[b][keep][:, :O], bearing=s.rec_bearing[b][keep][:, :O],
+            lidar=s.rec_lidar[b][keep], lidar_angles=angles, visible=s.rec_visible[b][keep][:, :n_obj],
+            distance=s.rec_distance[b][keep][:, :n_obj], bearing=s.rec_bearing[b][keep][:, :n_obj],
             object_ids=tuple(o.id for o in scene.objects),
         )
         k = explorer.spec.k
@@ -364,7 +370,8 @@ def explore_scenes(scenes: Sequence[Scene], cfg: Config, progress: bool = False,
     for batch in tqdm(batches, desc="explore", unit="batch", disable=not progress):
         padded = batch + [batch[0]] * (B - len(batch))
         state = explorer.run(scene_inputs(padded, explorer, cfg.seed))
-        results += cut_results(batch, explorer, jax.tree.map(lambda x: x[: len(batch)], state))
+        n = len(batch)
+        results += cut_results(batch, explorer, jax.tree.map(lambda x, n=n: x[:n], state))
     return results
 
 

@@ -20,7 +20,8 @@ cell, other free cells `TIGHT_COST` (so the robot can leave a tight spot but pre
 from __future__ import annotations
 
 import math
-from typing import NamedTuple, Sequence
+from collections.abc import Sequence
+from typing import NamedTuple
 
 import jax
 import jax.numpy as jnp

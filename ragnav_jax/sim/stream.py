@@ -47,7 +47,7 @@ class ExplorationStream:
         return path
 
     @staticmethod
-    def load(path: str | Path) -> "ExplorationStream":
+    def load(path: str | Path) -> ExplorationStream:
         path = Path(path)
         try:
             with np.load(path, allow_pickle=False) as z:
