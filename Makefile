@@ -23,11 +23,6 @@ install: $(STAMP)
 # against the baselines; prints the table and saves plots under $(DEMO_OUT).
 DEMO_SET := world.num_scenes=2 memory.embedder=hashing episodes.text=3 episodes.text_location=3 episodes.text_location_sensor=3 episodes.max_goals=3
 
-# The full pipeline on a small embedded default (2 houses, hashing embedder, 3 episodes per modality
-# and scene): generate, explore in MJX, build memory, episodes, closed-loop evaluation of RAGNav
-# against the baselines; prints the table and saves plots under $(DEMO_OUT).
-DEMO_SET := world.num_scenes=2 memory.embedder=hashing episodes.text=3 episodes.text_location=3 episodes.text_location_sensor=3 episodes.max_goals=3
-
 demo: install
 	$(VENV)/bin/ragnav generate --config configs/default.yaml --out $(DEMO_OUT) --force --quiet $(DEMO_SET)
 	$(VENV)/bin/ragnav explore --config configs/default.yaml --out $(DEMO_OUT) --force --quiet $(DEMO_SET)

@@ -108,6 +108,7 @@ def cmd_eval(args, cfg) -> int:
         for mod, blk in summary["by_modality"].items():
             table.append({"method": f"{m} [{mod}]", **{k: blk.get(k) for k in TABLE_KEYS if k in blk}})
     write_table(table, out / "eval" / "table")
+    save_bar_plot([r for r in table if "[" not in r["method"]], out / "eval" / "methods.png")
     if len(methods) == 1:  # a single method's summary also sits at the top of the eval folder
         shutil.copy(out / "eval" / methods[0].replace(":", "_") / "summary.json", out / "eval" / "summary.json")
     print((out / "eval" / "table.md").read_text())
@@ -125,3 +126,25 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--limit", type=int, default=0, help="first N episodes only (0: all)")
     p.add_argument("--stride", type=int, default=1, help="every N-th episode only (an even subsample)")
     p.set_defaults(func=cmd_eval)
+
+
+def save_bar_plot(rows: list[dict], path: Path) -> Path:
+    """Success rate, SPL and retrieval accuracy per method, side by side."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    keys = ("success_rate", "spl", "retrieval_accuracy")
+    x = np.arange(len(rows))
+    fig, ax = plt.subplots(figsize=(max(6, 1.1 * len(rows)), 3.5))
+    for j, k in enumerate(keys):
+        ax.bar(x + (j - 1) * 0.27, [r.get(k) or 0.0 for r in rows], 0.27, label=k)
+    ax.set_xticks(x, [r["method"] for r in rows], rotation=30, ha="right")
+    ax.set_ylim(0, 1)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
