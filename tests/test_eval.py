@@ -114,4 +114,4 @@ def test_eval_cli_malformed_episodes_exit_2(tmp_path, capsys):
     bad.write_text(EPISODES.read_text().splitlines()[0] + "\n{not json\n")
     rc = main(["eval", "--scenes", str(example_scene_path()), "--episodes", str(bad), "--out", str(tmp_path / "o")])
     assert rc == 2
-    assert ":2" in capsys.readouterr().err
+    assert "line 2" in capsys.readouterr().err
