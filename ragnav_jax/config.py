@@ -318,7 +318,7 @@ class RetrievalConfig:
     top_k: int = 8  # anchor-guided recall size K (<= 16)
     hops: int = 2  # anchor validation neighbourhood, hops (<= 3)
     boost_hops: int = 1
-    beam: int = 8  # forest beam width per level (<= 8) when a room phrase locks a region
+    beam: int = 32  # forest beam width per level (<= 32) when a room phrase locks a region
     anchor_threshold: float = 0.45
     boost_threshold: float = 0.45
     w_slot: float = 0.7  # instance phrase vs node fingerprint
@@ -333,7 +333,7 @@ class RetrievalConfig:
         _check(self.sigma > 0 and self.sigma_loc > 0, "retrieval.sigma", "sigma and sigma_loc must be > 0")
         _check(1 <= self.top_k <= 16, "retrieval.top_k", "must be in [1, 16]")
         _check(0 <= self.hops <= 3 and 0 <= self.boost_hops <= 1, "retrieval.hops", "hops in [0, 3], boost_hops in [0, 1]")
-        _check(1 <= self.beam <= 8, "retrieval.beam", "must be in [1, 8]")
+        _check(1 <= self.beam <= 32, "retrieval.beam", "must be in [1, 32]")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -363,7 +363,7 @@ class SweepAxes:
         _check(all(1 <= x <= 16 for x in self.top_k), "sweep.axes.top_k", "must be in [1, 16]")
         _check(all(0 <= x <= 3 for x in self.hops) and all(0 <= x <= 1 for x in self.boost_hops), "sweep.axes.hops",
                "hops in [0, 3], boost_hops in [0, 1]")
-        _check(all(1 <= x <= 8 for x in self.beam), "sweep.axes.beam", "must be in [1, 8]")
+        _check(all(1 <= x <= 32 for x in self.beam), "sweep.axes.beam", "must be in [1, 32]")
         _check(all(x >= 0 for x in self.lam), "sweep.axes.lam", "must be >= 0")
 
 

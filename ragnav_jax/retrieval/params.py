@@ -47,14 +47,14 @@ class RetrievalParams:
 
 INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
 DEFAULTS = dict(
-    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=8, anchor_threshold=0.45, boost_threshold=0.45,
+    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=32, anchor_threshold=0.45, boost_threshold=0.45,
     w_slot=0.7, match_threshold=0.45, sigma_loc=1.5, w_loc=1.0, w_sensor=1.0, w_room=1.0, tau_room=0.05,
     use_forest=1.0, use_topology=1.0, use_spatial=1.0, use_boost=1.0,
 )
 # Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).
 MAX_K = 16
 MAX_HOPS = 3
-MAX_BEAM = 8
+MAX_BEAM = 32
 
 ABLATIONS = {
     "ragnav": {},
