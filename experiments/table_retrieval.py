@@ -58,7 +58,7 @@ def main(argv=None) -> int:
         summaries[m] = s
         for mod in MODALITIES:
             acc = s["by_modality"].get(mod, {}).get("retrieval_accuracy")
-            paper = PAPER.get(m.split(":")[0] if m.startswith("ragnav") and ":" not in m else m, {}).get(mod)
+            paper = PAPER.get(m, {}).get(mod)
             rows.append({
                 "method": m, "input": mod, "accuracy": None if acc is None else round(acc, 3),
                 "retrieval_ms_single": round(s["retrieval_ms_single"], 3),
