@@ -434,6 +434,7 @@ class EvalConfig:
     path_points: int = 128  # static waypoint buffer per leg
     strict_lam: float = 1.0e4  # planning lambda for strict episodes (metres per order inversion)
     batch_size: int = 512  # episodes executed together in one vmapped call
+    look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")

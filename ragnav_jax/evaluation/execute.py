@@ -161,6 +161,26 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
                     run, look, init)
 
 
+def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:
+    """Waypoints every `spacing` metres along the polyline (every vertex kept, at most P in all; the spacing
+    grows for long paths), so the pure-pursuit controller follows the map's edges instead of cutting
+    the corners between key poses by up to its lookahead."""
+    points = np.asarray(points, np.float32).reshape(-1, 2)
+    if len(points) < 2:
+        return points
+    seg = np.linalg.norm(np.diff(points, axis=0), axis=1)
+    if len(points) >= P:
+        return points
+    spacing = max(spacing, float(seg.sum()) / max(P - len(points), 1))
+    out = [points[:1]]
+    for a, b, L in zip(points[:-1], points[1:], seg):
+        k = max(int(np.ceil(L / spacing)), 1)
+        t = np.arange(1, k + 1, dtype=np.float32)[:, None] / k
+        out.append(a + (b - a) * t)
+    dense = np.concatenate(out)
+    return dense if len(dense) <= P else points
+
+
 def pad_points(points: np.ndarray, P: int) -> tuple[np.ndarray, int]:
     """(P, 2) waypoints (the last repeated) and the count; longer lists are thinned evenly, ends kept."""
     points = np.asarray(points, np.float32).reshape(-1, 2)
