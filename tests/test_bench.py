@@ -77,3 +77,29 @@ def test_gpu_profile_runs_at_tiny_scale_on_cpu(tmp_path):
     assert sw["status"] == "ok" and sw["grid_points"] >= 1 and sw["points_per_s"] > 0
     assert set(doc["sections"]) == {"retrieval", "end_to_end", "sweep"} and set(SECTIONS) > set(doc["sections"])
     assert (out / "end_to_end_scenes.png").is_file() and (out / "end_to_end_nodes.png").is_file()
+
+
+def _fake_run(folder, section, ratio):
+    from ragnav_jax.bench.sections import comparison
+    from ragnav_jax.bench.timing import stats
+
+    comp = comparison(section, f"{section} case", stats([1.0, 1.2, 0.9]), stats([ratio] * 3), "peer x", "item")
+    doc = {"profile": "full", "time": "t", "git_commit": "abc", "note": "n", "notes": "", "total_wall_s": 2.0,
+           "machine": {"cpu_model": "cpu", "cpu_count": 2, "cpus_usable": 2, "memory_gb": 1, "jax_devices": ["cpu"],
+                       "load_average_1_5_15": [0, 0, 0], "device_kind": "cpu", "jax_backend": "cpu"},
+           "packages": {"jax": "0"}, "comparisons": [comp],
+           "sections": {section: {"status": "ok", "comparisons": [comp], "section_wall_s": 2.0, "section_cpu_s": 3.0}}}
+    folder.mkdir()
+    (folder / "bench.json").write_text(json.dumps(doc))
+
+
+def test_merge_combines_sections_and_rewrites_the_report(tmp_path):
+    _fake_run(tmp_path / "a", "paths", 10.0)
+    _fake_run(tmp_path / "b", "planning", 5.0)
+    assert main(["bench", "--out", str(tmp_path / "m"), "--merge", str(tmp_path / "a"), str(tmp_path / "b")]) == 0
+    doc = json.loads((tmp_path / "m" / "bench.json").read_text())
+    assert set(doc["sections"]) == {"paths", "planning"} and len(doc["comparisons"]) == 2 and doc["total_wall_s"] == 4.0
+    assert doc["comparisons"][0]["ratio"] == pytest.approx(10.0) and len(doc["parts"]) == 2
+    md = (tmp_path / "m" / "bench.md").read_text()
+    assert "paths case" in md and "planning case" in md and "| paths | ok | 2.0 | 3.0 | 1.50 |" in md
+    assert main(["bench", "--out", str(tmp_path / "m2"), "--merge", str(tmp_path / "nothing")]) == 2

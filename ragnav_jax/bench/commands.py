@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 
 def cmd_bench(args, cfg) -> int:
@@ -21,6 +22,14 @@ def cmd_bench(args, cfg) -> int:
         raise UserError(f"--only: unknown section(s) {', '.join(bad)} (known: {', '.join(SECTIONS)})")
     if args.scale <= 0:
         raise UserError("--scale must be > 0")
+    if args.merge:
+        from ragnav_jax.bench.suite import merge_runs
+
+        missing = [d for d in args.merge if not (Path(d) / "bench.json").is_file()]
+        if missing:
+            raise UserError(f"--merge: no bench.json in {', '.join(missing)}")
+        merge_runs(args.out, args.merge, log=print)
+        return 0
     profile = PROFILES["gpu" if args.gpu else "quick" if args.quick else "full"]
     profile = scaled(profile, args.scale)
     log = (lambda m: None) if args.quiet else (lambda m: print(m, flush=True))
@@ -41,4 +50,5 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--scale", type=float, default=1.0, help="multiply every size of the profile (e.g. --gpu --scale 0.001)")
     p.add_argument("--only", nargs="+", metavar="SECTION", help=f"run only these sections ({', '.join(SECTIONS)})")
     p.add_argument("--notes", default="", help="free text stored in the report (e.g. machine load)")
+    p.add_argument("--merge", nargs="+", metavar="RUN", help="combine earlier runs' bench.json into --out (later wins)")
     p.set_defaults(func=cmd_bench, overrides_allowed=False)

@@ -26,6 +26,7 @@ class Profile:
     path_graphs: int = 1000
     path_nodes: tuple[int, ...] = (80, 200)
     path_nx_sample: int = 50
+    path_repeats: int | None = None  # timed repeats of the batched call (None: `repeats`)
     # order planning: episodes, Python sample sizes
     plan_episodes: int = 10_000
     plan_python_bf: int = 20
@@ -65,7 +66,7 @@ QUICK = Profile(
 # CPU: the 64-scene point is left to the GPU profile (exploring 64 scenes alone takes longer
 # than the suite's 10-minute budget on 2 cores); explore runs a shortened budget so 1 + 4 + 14 scenes fit.
 FULL = Profile(
-    name="full", path_nx_sample=20,
+    name="full", path_nx_sample=20, path_repeats=3, retrieval_queries=(256, 256, 64, 16),
     e2e_scenes=(1, 4, 14), e2e_spacing_scenes=1, e2e_explore_steps=1500, e2e_execute_episodes=4,
     sweep_points=100, sweep_scenes=4,
 )

@@ -127,7 +127,7 @@ def bench_paths(p: Profile, log: Callable[[str], None]) -> dict:
         compile_s = time.perf_counter() - t0
         cost, _ = jax.block_until_ready(compiled(wj, mj))
         ts = []
-        for _ in range(p.repeats):
+        for _ in range(p.path_repeats or p.repeats):
             t0 = time.perf_counter()
             jax.block_until_ready(compiled(wj, mj))
             ts.append(time.perf_counter() - t0)

@@ -87,3 +87,29 @@ def _pkg_versions(base: dict) -> dict:
         except metadata.PackageNotFoundError:
             pass
     return base
+
+
+def merge_runs(out: str | Path, parts: Sequence[str | Path], log: Callable[[str], None] = print) -> dict:
+    """One report from several runs' bench.json (e.g. one `--only` section per command on a machine that
+    limits command length): sections of later parts win; the machine and settings of the first part are
+    kept and each part's are listed under `parts`."""
+    from ragnav_jax.bench.report import write_report
+
+    docs = [json.loads((Path(p) / "bench.json").read_text()) for p in parts]
+    doc = dict(docs[0])
+    doc["sections"] = {}
+    for d in docs:
+        doc["sections"].update(d["sections"])
+    doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
+    doc["total_wall_s"] = sum(d.get("total_wall_s", 0.0) for d in docs)
+    doc["process_max_rss_mb"] = max(d.get("process_max_rss_mb", 0.0) for d in docs)
+    doc["parts"] = [{"run": str(p), "profile": d["profile"], "time": d["time"], "sections": list(d["sections"]),
+                     "machine": d["machine"], "total_wall_s": d.get("total_wall_s")} for p, d in zip(parts, docs)]
+    doc["profile"] = "+".join(dict.fromkeys(d["profile"] for d in docs))
+    doc["notes"] = " ".join(dict.fromkeys(d.get("notes", "") for d in docs if d.get("notes")))
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+    write_report(doc, out)
+    log(f"merged {len(docs)} runs into {out / 'bench.json'} and {out / 'bench.md'}")
+    return doc
