@@ -347,6 +347,7 @@ class Loop:
         self._seen: dict = {}
         self.look_cost = int(math.ceil(2 * math.pi / cfg.sim.max_yaw_rate / executor.control_dt))
         self.obstacles: dict = {}
+        self._drive_cache: dict = {}
         self.drive_pred = self._drive_paths(bank)
         # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
         obs = np.asarray(bank.memory.obs_object)
@@ -392,6 +393,36 @@ class Loop:
             if ok:
                 return ok[0]
         return int(np.argmin(d))
+
+    def drive_points(self, st: EpisodeState, pts: np.ndarray) -> np.ndarray:
+        """The leg's waypoints as driven: densified along the polyline, each inner one pushed (a few
+        gradient steps on the clearance field) out to the robot's radius plus a margin from walls and
+        objects where the map's edge runs closer; the last waypoint stays."""
+        pts = densify(pts, self.ex.path_points)
+        obs = self.obstacles.get(st.b)
+        if obs is None or len(pts) < 3:
+            return pts
+        key = (st.b, pts.tobytes())
+        if key not in self._drive_cache:
+            self._drive_cache[key] = self._nudge(pts, obs)
+        return self._drive_cache[key]
+
+    def _nudge(self, pts: np.ndarray, obs: dict) -> np.ndarray:
+        need = self.cfg.sim.robot_radius + 0.05
+        inner = pts[:-1].copy()
+        h = 0.02
+        for _ in range(4):
+            c = segment_clearance_np(inner, inner, obs)
+            low = c < need
+            if not low.any():
+                break
+            q = inner[low]
+            gx = segment_clearance_np(q + [h, 0], q + [h, 0], obs) - segment_clearance_np(q - [h, 0], q - [h, 0], obs)
+            gy = segment_clearance_np(q + [0, h], q + [0, h], obs) - segment_clearance_np(q - [0, h], q - [0, h], obs)
+            g = np.stack([gx, gy], 1)
+            g /= np.maximum(np.linalg.norm(g, axis=1, keepdims=True), 1e-9)
+            inner[low] = q + g * np.clip(need - c[low], 0.0, 0.1)[:, None]
+        return np.concatenate([inner, pts[-1:]]).astype(np.float32)
 
     def nearest(self, b: int, xy) -> int:
         d = np.linalg.norm(self.pos[b] - np.asarray(xy)[None], axis=1)
@@ -718,7 +749,8 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
         allow = np.zeros(B, np.int32)
         for i, leg in enumerate(legs):
             if leg is not None:
-                pts[i], n[i] = pad_points(densify(leg[3], P) if leg[0] in ("nav", "closer", "goto_seen") else leg[3], P)
+                way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
+                pts[i], n[i] = pad_points(way, P)
                 st = chunk[i]
                 allow[i] = max(min(cfg.eval.leg_max_steps, cfg.eval.max_steps - st.steps - st.look_steps), 0)
         res = ex.run(sidx, d, jnp.asarray(pts), jnp.asarray(n), jnp.asarray(allow))
