@@ -31,7 +31,7 @@ import dataclasses
 import itertools
 import math
 import time
-from collections import Counter, defaultdict
+from collections import Counter, defaultdict, deque
 from typing import Sequence
 
 import jax
@@ -58,6 +58,9 @@ NAV_METHODS = ("ragnav", "ragnav:no_forest", "ragnav:no_topology", "ragnav:no_sp
 THIN_M = 0.3  # metres between replayed exploration waypoints (ETPNav-style)
 SAME_INSTANCE_M = 0.5  # a seen object this close to the retrieved instance's estimated position is that instance
 TIGHT_PENALTY = 10.0  # driving-path cost factor of map edges that pass closer to an obstacle than the robot's radius
+GRID_M = 0.05  # occupancy grid of the local planner (metres per cell)
+GRID_MARGIN_M = 0.04  # clearance beyond the robot's radius the local planner keeps
+GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches
 CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
 
 
@@ -347,7 +350,8 @@ class Loop:
         self._seen: dict = {}
         self.look_cost = int(math.ceil(2 * math.pi / cfg.sim.max_yaw_rate / executor.control_dt))
         self.obstacles: dict = {}
-        self._drive_cache: dict = {}
+        self._grids: dict = {}
+        self._local_cache: dict = {}
         self.drive_pred = self._drive_paths(bank)
         # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
         obs = np.asarray(bank.memory.obs_object)
@@ -395,34 +399,82 @@ class Loop:
         return int(np.argmin(d))
 
     def drive_points(self, st: EpisodeState, pts: np.ndarray) -> np.ndarray:
-        """The leg's waypoints as driven: densified along the polyline, each inner one pushed (a few
-        gradient steps on the clearance field) out to the robot's radius plus a margin from walls and
-        objects where the map's edge runs closer; the last waypoint stays."""
-        pts = densify(pts, self.ex.path_points)
-        obs = self.obstacles.get(st.b)
-        if obs is None or len(pts) < 3:
-            return pts
-        key = (st.b, pts.tobytes())
-        if key not in self._drive_cache:
-            self._drive_cache[key] = self._nudge(pts, obs)
-        return self._drive_cache[key]
+        """The leg's waypoints as driven: every segment that passes closer to a wall or object than the
+        robot's radius (plus a margin) is replaced by a local plan on the robot's occupancy grid (the
+        paper assumes a perfect local planner between key poses); then densified along the polyline."""
+        pts = np.asarray(pts, np.float32).reshape(-1, 2)
+        if st.b not in self.obstacles or len(pts) < 2:
+            return densify(pts, self.ex.path_points)
+        out = [pts[:1]]
+        for a, c in zip(pts[:-1], pts[1:]):
+            out.append(self._local(st.b, a, c)[1:])
+        way = np.concatenate(out)
+        return densify(way if len(way) <= self.ex.path_points else pts, self.ex.path_points)
 
-    def _nudge(self, pts: np.ndarray, obs: dict) -> np.ndarray:
-        need = self.cfg.sim.robot_radius + 0.05
-        inner = pts[:-1].copy()
-        h = 0.02
-        for _ in range(4):
-            c = segment_clearance_np(inner, inner, obs)
-            low = c < need
-            if not low.any():
-                break
-            q = inner[low]
-            gx = segment_clearance_np(q + [h, 0], q + [h, 0], obs) - segment_clearance_np(q - [h, 0], q - [h, 0], obs)
-            gy = segment_clearance_np(q + [0, h], q + [0, h], obs) - segment_clearance_np(q - [0, h], q - [0, h], obs)
-            g = np.stack([gx, gy], 1)
-            g /= np.maximum(np.linalg.norm(g, axis=1, keepdims=True), 1e-9)
-            inner[low] = q + g * np.clip(need - c[low], 0.0, 0.1)[:, None]
-        return np.concatenate([inner, pts[-1:]]).astype(np.float32)
+    def _need(self) -> float:
+        return self.cfg.sim.robot_radius + GRID_MARGIN_M
+
+    def _grid(self, b: int):
+        """(origin (2,), free (H, W) bool): cells whose clearance to walls and objects fits the robot."""
+        if b not in self._grids:
+            obs = self.obstacles[b]
+            pts = np.concatenate([np.asarray(obs["wall_a"]), np.asarray(obs["wall_b"]), self.pos[b][self.mask[b]]])
+            lo, hi = pts.min(0) - 0.5, pts.max(0) + 0.5
+            xs, ys = np.arange(lo[0], hi[0], GRID_M), np.arange(lo[1], hi[1], GRID_M)
+            cells = np.stack(np.meshgrid(xs, ys, indexing="ij"), -1).reshape(-1, 2).astype(np.float32)
+            clear = np.concatenate([segment_clearance_np(c, c, obs) for c in np.array_split(cells, max(len(cells) // 4096, 1))])
+            self._grids[b] = (lo.astype(np.float32), (clear >= self._need()).reshape(len(xs), len(ys)))
+        return self._grids[b]
+
+    def _local(self, b: int, a: np.ndarray, c: np.ndarray) -> np.ndarray:
+        """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS within a
+        window around the segment, shortcut by line of sight); the straight segment when none is found."""
+        key = (b, *np.round(a, 3), *np.round(c, 3))
+        if key in self._local_cache:
+            return self._local_cache[key]
+        obs, need = self.obstacles[b], self._need()
+        straight = np.stack([a, c])
+        if segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3:
+            self._local_cache[key] = straight
+            return straight
+        lo, free = self._grid(b)
+        H, W = free.shape
+        cell = lambda p: (int(np.clip(round((p[0] - lo[0]) / GRID_M), 0, H - 1)),  # noqa: E731
+                          int(np.clip(round((p[1] - lo[1]) / GRID_M), 0, W - 1)))
+        (i0, j0), (i1, j1) = cell(a), cell(c)
+        pad = int(GRID_WINDOW_M / GRID_M)
+        bi0, bi1 = max(min(i0, i1) - pad, 0), min(max(i0, i1) + pad, H - 1)
+        bj0, bj1 = max(min(j0, j1) - pad, 0), min(max(j0, j1) + pad, W - 1)
+        ok = free[bi0 : bi1 + 1, bj0 : bj1 + 1].copy()
+        ok[i0 - bi0, j0 - bj0] = ok[i1 - bi0, j1 - bj0] = True  # the ends themselves may sit in a tight spot
+        prev = {(i0, j0): None}
+        queue = deque([(i0, j0)])
+        while queue and (i1, j1) not in prev:
+            i, j = queue.popleft()
+            for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)):
+                n = (i + di, j + dj)
+                if bi0 <= n[0] <= bi1 and bj0 <= n[1] <= bj1 and n not in prev and ok[n[0] - bi0, n[1] - bj0]:
+                    prev[n] = (i, j)
+                    queue.append(n)
+        if (i1, j1) not in prev:
+            self._local_cache[key] = straight
+            return straight
+        path, n = [], (i1, j1)
+        while n is not None:
+            path.append(n)
+            n = prev[n]
+        xy = lo + np.asarray(path[::-1], np.float32) * GRID_M
+        xy[0], xy[-1] = a, c
+        keep = [0]  # string pulling: jump to the farthest cell still in clear line of sight
+        while keep[-1] < len(xy) - 1:
+            k = keep[-1]
+            cand = np.arange(k + 1, len(xy))
+            clear = segment_clearance_np(np.repeat(xy[k : k + 1], len(cand), 0), xy[cand], obs)
+            good = cand[clear >= need * 0.999]
+            keep.append(int(good.max()) if len(good) else k + 1)
+        out = xy[keep].astype(np.float32)
+        self._local_cache[key] = out
+        return out
 
     def nearest(self, b: int, xy) -> int:
         d = np.linalg.norm(self.pos[b] - np.asarray(xy)[None], axis=1)

@@ -64,6 +64,7 @@ class Executor:
     run: object  # jitted (scene_idx (E,), d, points (E,P,2), n (E,), allowance (E,)) -> LegResult
     look: object  # jitted (scene_idx (E,), d) -> (visible (E, O) bool, distance (E, O) float32)
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
+    traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
 
 
 def make_executor(scenes: Sequence[Scene], cfg: Config) -> Executor:
@@ -87,6 +88,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
     rb = model.layout.robot_body
     lookahead, tol, stall_max = cfg.explore.lookahead, ev.arrive_tol, ev.stall_steps
     headings = jnp.asarray(np.arange(ev.look_headings) * 2 * math.pi / ev.look_headings, jnp.float32)
+    traces = {"run": 0, "look": 0, "init": 0}  # bumped by Python at trace time only
 
     def models(scene_idx):
         g = jax.tree.map(lambda x: x[scene_idx], tables.geometry)
@@ -112,6 +114,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
 
     @jax.jit
     def run(scene_idx, d, points, n, allowance):
+        traces["run"] += 1
         m, in_axes = models(scene_idx)
         E = scene_idx.shape[0]
         paths = jax.vmap(Path.of)(points, n)
@@ -139,6 +142,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
 
     @jax.jit
     def look(scene_idx, d):
+        traces["look"] += 1
         m, in_axes = models(scene_idx)
 
         def one(m, d, op, osz, om):
@@ -154,11 +158,12 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
 
     @jax.jit
     def init(scene_idx, start):
+        traces["init"] += 1
         m, in_axes = models(scene_idx)
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, look, init)
+                    run, look, init, traces)
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:
