@@ -66,7 +66,7 @@ QUICK = Profile(
 # CPU: the 64-scene point is left to the GPU profile (exploring 64 scenes alone takes longer
 # than the suite's 10-minute budget on 2 cores); explore runs a shortened budget so 1 + 4 + 14 scenes fit.
 FULL = Profile(
-    name="full", path_nx_sample=20, path_repeats=3, retrieval_queries=(256, 256, 64, 16),
+    name="full", path_nx_sample=20, path_repeats=3, retrieval_queries=(256, 256, 64, 16), sim_batches=(1, 32, 1024),
     e2e_scenes=(1, 4, 14), e2e_spacing_scenes=1, e2e_explore_steps=1500, e2e_execute_episodes=4,
     sweep_points=100, sweep_scenes=4,
 )

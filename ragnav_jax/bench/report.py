@@ -140,7 +140,9 @@ def write_report(doc: dict, out: Path) -> Path:
         L.append(f"| {name} | {s.get('status')} | {w:.1f} | {c:.1f} | {c / w if w else 0:.2f} |")
     L += ["", "## Comparisons", ""] + comparison_table(doc["comparisons"]) + [""]
     for name, s in secs.items():
-        if s.get("status") != "ok":
+        if s.get("status") == "partial":
+            L += [f"**{name}: partial** - the run stopped inside this section; its figures so far are below.", ""]
+        elif s.get("status") != "ok":
             L += [f"**{name}: {s.get('status')}** - {s.get('reason')}", ""]
     r = secs.get("retrieval", {})
     if r.get("rows"):

@@ -24,6 +24,16 @@ REPO = Path(__file__).resolve().parents[2]
 PAPER_MS = (185.0, 195.0)  # the paper's retrieval latency per query
 
 
+# Set by the suite while a section runs: called with the section's figures so far, which it saves as a
+# 'partial' section, so a run killed mid-section (a time-limited command) keeps what it measured.
+partial_hook: Callable[[dict], None] | None = None
+
+
+def _partial(res: dict) -> None:
+    if partial_hook is not None:
+        partial_hook(res)
+
+
 class Unavailable(RuntimeError):
     """A section or stage whose code is not in this tree (recorded as 'not available')."""
 
@@ -82,6 +92,7 @@ def bench_retrieval(p: Profile, log: Callable[[str], None]) -> dict:
         comps.append(comparison("retrieval", f"single query vs paper, {n} nodes", r["single"], paper,
                                 "paper (185-195 ms/query, reported)", "query", nodes=n,
                                 compile_s=r["compile_single_s"]))
+        _partial({"rows": rows, "comparisons": comps})
         log(f"retrieval N={n}: single {r['single_ms']:.2f} ms, batched {r['batched_queries_per_s']:.0f} q/s, "
             f"faiss/JAX per query {r['sim_ratio_faiss_over_jax']:.2f}")
     return {"rows": rows, "comparisons": comps}
@@ -154,6 +165,7 @@ def bench_paths(p: Profile, log: Callable[[str], None]) -> dict:
                                 _per(ours, p.path_graphs), _per(peer, p.path_graphs), "networkx all_pairs_dijkstra",
                                 "graph", nodes=n, compile_s=compile_s, agrees=agree,
                                 peer_extrapolated_from=sample))
+        _partial({"rows": rows, "comparisons": comps})
         log(f"paths n={n}: jax {ours['median_s']:.3f} s / {p.path_graphs} graphs (compile {compile_s:.1f} s), "
             f"networkx {peer['median_s']:.1f} s, x{comps[-1]['ratio']:.0f}, agree={agree}")
     return {"rows": rows, "comparisons": comps}
@@ -207,6 +219,7 @@ def bench_simulation(p: Profile, log: Callable[[str], None]) -> dict:
         comps.append(comparison("simulation", f"MJX batch {b} vs MuJoCo C, 1 thread", spread(r, b * p.sim_steps), peer,
                                 "MuJoCo C loop (mj_step, mj_multiRay, mj_ray), 1 thread", "env step", batch=b,
                                 compile_s=r["compile_s"], env_steps_per_s=r["env_steps_per_s"]))
+        _partial({"c_engine": c, "rows": rows, "comparisons": comps})
         log(f"simulation batch {b}: {r['env_steps_per_s']:.0f} env-steps/s (C {c['env_steps_per_s']:.0f}), "
             f"compile {r['compile_s']:.1f} s")
     return {"c_engine": c, "rows": rows, "comparisons": comps, "scene": scene.name,
@@ -329,6 +342,7 @@ def bench_end_to_end(p: Profile, log: Callable[[str], None]) -> dict:
         rec, art = run_pipeline(paper_config(p, n), p, log)
         _ARTIFACTS[(p.name, n)] = art
         by_scenes.append(rec)
+        _partial({"by_scenes": by_scenes})
     by_nodes = []
     art = _ARTIFACTS.get((p.name, p.e2e_spacing_scenes))
     for sp in p.e2e_spacings:
@@ -336,6 +350,7 @@ def bench_end_to_end(p: Profile, log: Callable[[str], None]) -> dict:
                                 reuse=None if art is None else {k: art[k] for k in ("scenes", "explored")}, execute=False)
         rec["keyframe_spacing"] = sp
         by_nodes.append(rec)
+        _partial({"by_scenes": by_scenes, "by_nodes": by_nodes})
     ex = by_scenes[0]["stages"].get("execute", {})
     return {"preset": "configs/paper.yaml", "embedder": p.e2e_embedder, "explore_max_steps": p.e2e_explore_steps,
             "explore_batch": p.e2e_explore_batch, "by_scenes": by_scenes, "by_nodes": by_nodes,

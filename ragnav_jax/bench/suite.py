@@ -53,8 +53,18 @@ def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: 
         "machine": machine(), "packages": _pkg_versions(package_versions()), "note": NOTE, "notes": notes,
         "sections": {}, "comparisons": [],
     }
+    from ragnav_jax.bench import sections
+
+    def save():
+        doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
+        doc["total_wall_s"] = time.perf_counter() - t_all
+        doc["process_max_rss_mb"] = max_rss_mb()
+        (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+
     t_all = time.perf_counter()
     for name in names:
+        sections.partial_hook = lambda res, name=name: (doc["sections"].__setitem__(name, {**res, "status": "partial"}),
+                                                        save())
         log(f"== {name}")
         t0, c0 = time.perf_counter(), time.process_time()
         try:
@@ -69,10 +79,8 @@ def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: 
         res["section_wall_s"] = time.perf_counter() - t0
         res["section_cpu_s"] = time.process_time() - c0  # / wall: cores this process got (machine load)
         doc["sections"][name] = res
-        doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
-        doc["total_wall_s"] = time.perf_counter() - t_all
-        doc["process_max_rss_mb"] = max_rss_mb()
-        (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+        save()
+    sections.partial_hook = None
     write_report(doc, out)
     log(f"wrote {out / 'bench.json'} and {out / 'bench.md'} ({doc['total_wall_s']:.0f} s)")
     return doc
