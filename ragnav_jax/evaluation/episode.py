@@ -649,6 +649,13 @@ class Loop:
                              self.cfg.episodes.location_radius, known=self.known[st.b])
             ok = [o for o in ok if (g, o) not in st.skip]
             est = self.estimate(st, g) if self.spec.retrieval != "oracle" else None
+            if not ok and kind == "closer" and est is not None:
+                # Still out of sight from near it (occluded, or small): the memory recorded the instance,
+                # so it passes the same check on the record and is approached at its estimated position.
+                rec = [o for o in self.known[st.b] if box_distance(sc.objects[o], est) <= SAME_INSTANCE_M]
+                ok = [o for o in confirm(self.facts[st.ep.scene], st.subgoals[g], rec,
+                                         self.cfg.episodes.location_radius, known=self.known[st.b])
+                      if (g, o) not in st.skip]
             closer = self.cfg.eval.look_closer and est is not None and kind == "nav"
             if ok:
                 if est is None:
