@@ -1,5 +1,6 @@
-"""The hot leg runner compiles once: every leg of every episode (and a second evaluation) reuses the
-same trace of Executor.run / look / init (fixed batch size, padded waypoints, array arguments)."""
+"""The hot leg runner compiles once: every leg of every episode, over several chunks and a second
+method's evaluation, reuses the same trace of Executor.run / look / init (fixed batch size, padded
+waypoints, array arguments)."""
 
 from test_memory_streams import synthetic_stream
 
@@ -22,5 +23,6 @@ def test_leg_runner_traces_once_across_legs(apartment):
     legs = sum(len(r["declarations"]) + r["rejected_candidates"] for r in rows)
     assert legs >= 2  # several legs really ran through the compiled runner
     assert ex.traces == {"run": 1, "look": 1, "init": 1}
-    evaluate_navigation(bank, [apartment], episodes[:3], emb, cfg, "oracle", executor=ex)
+    # Another method over the same episodes (same batch size B = min(batch_size, episodes)) reuses it too.
+    evaluate_navigation(bank, [apartment], episodes, emb, cfg, "oracle", executor=ex)
     assert ex.traces == {"run": 1, "look": 1, "init": 1}
