@@ -58,16 +58,18 @@ def test_quick_bench_reports_every_comparison(tmp_path):
 
 @pytest.mark.slow
 def test_gpu_profile_runs_at_tiny_scale_on_cpu(tmp_path):
+    # GPU settings at 1/2000: chunked 500-query batches, capped faiss, the sweep; simulation and peers are
+    # covered by the quick test above (their GPU sizes only change batch sizes)
     out = tmp_path / "gpu"
-    assert main(["bench", "--out", str(out), "--gpu", "--scale", "0.001", "--quiet",
+    assert main(["bench", "--out", str(out), "--gpu", "--scale", "0.0005", "--quiet",
                  "--only", "retrieval", "end_to_end", "sweep"]) == 0
     doc = json.loads((out / "bench.json").read_text())
-    assert doc["profile"] == "gpu@0.001"
+    assert doc["profile"] == "gpu@0.0005"
     r = doc["sections"]["retrieval"]["rows"]
-    assert [x["nodes"] for x in r] == [16, 100, 1000]  # 80, 1k and 10k all floor to 16 nodes, deduplicated
+    assert [x["nodes"] for x in r] == [16, 50, 500]  # 80, 1k and 10k all floor to 16 nodes, deduplicated
     assert all(x["query_chunk"] < x["batch_queries"] and x["sim_top1_agreement"] >= 0.99 for x in r)
     e2e = doc["sections"]["end_to_end"]
-    assert e2e["status"] == "ok" and [x["scenes"] for x in e2e["by_scenes"]] == [1, 2]
+    assert e2e["status"] == "ok" and [x["scenes"] for x in e2e["by_scenes"]] == [1]  # 1 .. 1024 scenes -> 1
     st = e2e["by_scenes"][0]["stages"]
     for s in ("generate", "explore", "build_memory", "episodes", "retrieve", "plan"):
         assert st[s]["wall_s"] >= st[s]["compile_s"] >= 0 and st[s]["peak_rss_mb"] > 0
