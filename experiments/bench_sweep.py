@@ -59,7 +59,7 @@ def bench_grid(batch, grid, repeats: int) -> tuple[dict, np.ndarray]:
 
 def bench_loop(batch, grid, repeats: int) -> tuple[dict, np.ndarray]:
     """A Python loop over the points, one compiled single-point call each (compiled once)."""
-    points = [jax.tree.map(lambda x: jax.numpy.asarray(x[p]), grid.params) for p in range(grid.size)]
+    points = [jax.tree.map(lambda x, p=p: jax.numpy.asarray(x[p]), grid.params) for p in range(grid.size)]
     t0 = time.perf_counter()
     compiled = jax.jit(correct_counts).lower(batch, points[0]).compile()
     compile_s = time.perf_counter() - t0

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
 from ragnav_jax.language.episodes import generate_episodes, save_episodes
@@ -16,7 +17,6 @@ from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.checkpoint import save_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
 from ragnav_jax.world.scene import save_scene
-from test_memory_streams import synthetic_stream
 
 ROOT = Path(__file__).resolve().parents[1]
 # Small config overrides shared by the tests: the hashing embedder, a 3 x 2 grid, three variants.

@@ -4,8 +4,10 @@ from pathlib import Path
 
 import nbformat
 import pytest
+import sweep_fixtures
+from sweep_fixtures import SMALL
 
-from sweep_fixtures import SMALL, tiny_run  # noqa: F401  (fixture)
+tiny_run = sweep_fixtures.tiny_run  # the session fixture
 
 NOTEBOOKS = sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("*.ipynb"))
 

@@ -5,10 +5,13 @@ import json
 import jax
 import numpy as np
 import pandas as pd
+import sweep_fixtures
+from sweep_fixtures import SMALL, ragnav_subprocess
 
 from ragnav_jax.cli import main
 from ragnav_jax.evaluation import sharding
-from sweep_fixtures import SMALL, ragnav_subprocess, tiny_run  # noqa: F401  (fixture)
+
+tiny_run = sweep_fixtures.tiny_run  # the session fixture
 
 
 def test_pad_and_shard_helpers_on_one_device():

@@ -8,6 +8,8 @@ import jax
 import numpy as np
 import pandas as pd
 import pytest
+import sweep_fixtures
+from sweep_fixtures import SMALL, ragnav_subprocess
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
@@ -15,7 +17,8 @@ from ragnav_jax.evaluation import sweep as S
 from ragnav_jax.language.episodes import load_episodes
 from ragnav_jax.retrieval.evaluate import correct_counts, evaluate_retrieval, prepare_batch
 from ragnav_jax.retrieval.params import params_from_config
-from sweep_fixtures import SMALL, ragnav_subprocess, tiny_run  # noqa: F401  (fixture)
+
+tiny_run = sweep_fixtures.tiny_run  # the session fixture
 
 
 @pytest.fixture(scope="module")
@@ -37,7 +40,7 @@ def test_grid_equals_points_one_by_one(tiny_run, batch, chunk):
     assert grid.size == 3 * 6 and grid.outer == ("use_forest", "use_boost") and grid.inner == ("sigma", "eta")
     sums, stats = S.evaluate_grid([S.retrieval_metric(b, meta, grid)], grid, chunk * 3)
     for p in range(grid.size):
-        ref = np.asarray(ONE(b, jax.tree.map(lambda x: x[p], grid.params)))
+        ref = np.asarray(ONE(b, jax.tree.map(lambda x, p=p: x[p], grid.params)))
         np.testing.assert_array_equal(sums["retrieval_accuracy"][p], ref, err_msg=f"point {p}: {grid.points[p]}")
     assert stats["chunks"] == -(-6 // chunk) and stats["combos_per_chunk"] == chunk
 

@@ -7,6 +7,8 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+import sweep_fixtures
+from sweep_fixtures import SMALL
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
@@ -14,7 +16,8 @@ from ragnav_jax.evaluation import tune as T
 from ragnav_jax.language.episodes import load_episodes
 from ragnav_jax.retrieval.evaluate import node_scores, prepare_batch
 from ragnav_jax.retrieval.params import params_from_config
-from sweep_fixtures import SMALL, tiny_run  # noqa: F401  (fixture)
+
+tiny_run = sweep_fixtures.tiny_run  # the session fixture
 
 
 @pytest.fixture(scope="module")

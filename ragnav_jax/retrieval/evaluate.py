@@ -18,7 +18,7 @@ from __future__ import annotations
 import dataclasses
 import time
 from collections import defaultdict
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax
 import jax.numpy as jnp
