@@ -65,7 +65,8 @@ def bench_mjx(env: NavEnv, batch: int, steps: int, repeats: int, seed: int = 0) 
     med = statistics.median(times)
     return {
         "batch": batch, "steps_per_call": steps, "repeats": repeats, "compile_s": round(compile_s, 2),
-        "median_call_s": round(med, 4), "env_steps_per_s": round(batch * steps / med, 1),
+        "median_call_s": round(med, 4), "min_call_s": round(min(times), 4), "max_call_s": round(max(times), 4),
+        "env_steps_per_s": round(batch * steps / med, 1),
         "mean_visible_objects": round(float(jnp.mean(out[1])), 3),
     }
 
@@ -132,6 +133,7 @@ def bench_c(scene, cfg, walls: int, objects: int, steps: int, repeats: int, seed
         times.append(time.perf_counter() - t0)
     med = statistics.median(times)
     return {"steps_per_call": steps, "repeats": repeats, "median_call_s": round(med, 4),
+            "min_call_s": round(min(times), 4), "max_call_s": round(max(times), 4),
             "env_steps_per_s": round(steps / med, 1)}
 
 

@@ -223,7 +223,7 @@ def bench_simulation(p: Profile, log: Callable[[str], None]) -> dict:
         log(f"simulation batch {b}: {r['env_steps_per_s']:.0f} env-steps/s (C {c['env_steps_per_s']:.0f}), "
             f"compile {r['compile_s']:.1f} s")
     return {"c_engine": c, "rows": rows, "comparisons": comps, "scene": scene.name,
-            "note": "min/max of a figure equal its median where experiments/bench_sim.py reports medians only"}
+            "note": "min and max per call from experiments/bench_sim.py (equal to the median where it gives none)"}
 
 
 # ----------------------------------------------------------------------------------------------------
