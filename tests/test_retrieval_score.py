@@ -136,11 +136,19 @@ def test_ablation_grid_in_one_call_traces_once():
 
 
 def test_sigma_grid_without_recompiling():
-    f = jax.jit(score_subgoal)
+    # A function object of its own: jax.jit wrappers of the same function share one executable cache,
+    # so other tests' calls of jit(score_subgoal) would show up in its cache size.
+    traces = []
+
+    def scored(idx, q, p):
+        traces.append(1)
+        return score_subgoal(idx, q, p)
+
+    f = jax.jit(scored)
     q = query(unit(REMOTE), anchor=unit(SOFA))
     for sigma in (0.5, 1.0, 3.0):
         f(IDX, q, P.replace(sigma=jnp.float32(sigma)))
-    assert f._cache_size() == 1
+    assert len(traces) == 1 and f._cache_size() == 1
 
 
 def test_room_term_prefers_the_matching_region():

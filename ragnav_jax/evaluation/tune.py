@@ -112,22 +112,27 @@ def tune(batch: RetrievalBatch, base: RetrievalParams, names: Sequence[str], ste
     opt = optax.adam(learning_rate)
     state0 = (to_free(base, names), jnp.log(jnp.float32(temperature)))
     tau = jnp.float32(gate_tau)
-    loss_fn = lambda st: surrogate_loss(st[0], st[1], batch, base, tau)  # noqa: E731
+    # The batch and base are arguments of the jitted functions, never closed over: as constants they
+    # would be folded into the program (slow compiles on large batches).
+
+    def loss_fn(st, b, p0):
+        return surrogate_loss(st[0], st[1], b, p0, tau)
+
     grad_fn = jax.value_and_grad(loss_fn)
 
-    def step(carry, _):
-        st, os = carry
-        loss, g = grad_fn(st)
-        upd, os = opt.update(g, os)
-        return (optax.apply_updates(st, upd), os), loss
-
     @jax.jit
-    def segment(st, os):
+    def segment(st, os, b, p0):
+        def step(carry, _):
+            st, os = carry
+            loss, g = grad_fn(st, b, p0)
+            upd, os = opt.update(g, os)
+            return (optax.apply_updates(st, upd), os), loss
+
         return jax.lax.scan(step, (st, os), None, length=eval_every)
 
-    hits_fn = jax.jit(lambda st: correct_counts(batch, from_free(st[0], base)))
+    hits_fn = jax.jit(lambda st, b, p0: correct_counts(b, from_free(st[0], p0)))
     st, os = state0, opt.init(state0)
-    losses, checks = [], [(0, np.asarray(hits_fn(st)))]
+    losses, checks = [], [(0, np.asarray(hits_fn(st, batch, base)))]
     best = (int(checks[0][1].sum()), 0, st)
     done = 0
     it = range(-(-steps // eval_every))
@@ -136,14 +141,14 @@ def tune(batch: RetrievalBatch, base: RetrievalParams, names: Sequence[str], ste
 
         it = tqdm(it, desc="tune", unit="segment")
     for _ in it:
-        (st, os), ls = segment(st, os)
+        (st, os), ls = segment(st, os, batch, base)
         done += eval_every
         losses.extend(np.asarray(ls).tolist())
-        h = np.asarray(hits_fn(st))
+        h = np.asarray(hits_fn(st, batch, base))
         checks.append((done, h))
         if int(h.sum()) > best[0]:
             best = (int(h.sum()), done, st)
-    losses.append(float(jax.jit(loss_fn)(st)))
+    losses.append(float(jax.jit(loss_fn)(st, batch, base)))
     _, best_step, best_st = best
     params = jax.tree.map(lambda x: jnp.asarray(x), from_free(best_st[0], base))
     return TuneResult(params, float(jnp.exp(best_st[1])), np.asarray(losses), checks, best_step)
