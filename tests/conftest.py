@@ -7,10 +7,11 @@ import os
 os.environ.setdefault("JAX_PLATFORMS", "cpu")
 os.environ.setdefault("HF_HUB_OFFLINE", "1")
 
+from pathlib import Path  # noqa: E402
+
 import jax  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from pathlib import Path  # noqa: E402
 
 jax.config.update("jax_numpy_rank_promotion", "raise")
 

@@ -2,8 +2,8 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
-
 from conftest import tree_allclose
+
 from ragnav_jax.config import WorldConfig
 from ragnav_jax.world.arrays import PadSizes, pad_sizes, scene_arrays, stack_scenes
 from ragnav_jax.world.generator import generate_scenes

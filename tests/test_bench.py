@@ -105,3 +105,17 @@ def test_merge_combines_sections_and_rewrites_the_report(tmp_path):
     md = (tmp_path / "m" / "bench.md").read_text()
     assert "paths case" in md and "planning case" in md and "| paths | ok | 2.0 | 3.0 | 1.50 |" in md
     assert main(["bench", "--out", str(tmp_path / "m2"), "--merge", str(tmp_path / "nothing")]) == 2
+
+
+def test_profile_overrides_parse_and_reject():
+    from ragnav_jax.bench.commands import override_profile
+    from ragnav_jax.bench.profiles import GPU
+    from ragnav_jax.errors import UserError
+
+    p = override_profile(GPU, ["e2e_embedder=hashing", "e2e_scenes=1,14", "path_chunk=none", "sweep_points=1000"])
+    assert (p.e2e_embedder, p.e2e_scenes, p.path_chunk, p.sweep_points) == ("hashing", (1, 14), None, 1000)
+    assert p.retrieval_sizes == GPU.retrieval_sizes and p.name == "gpu+set"
+    with pytest.raises(UserError, match="FIELD one of"):
+        override_profile(GPU, ["no_such_field=1"])
+    with pytest.raises(UserError, match="not a valid int"):
+        override_profile(GPU, ["sweep_points=many"])

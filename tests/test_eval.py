@@ -2,10 +2,10 @@
 the simulated trajectory (not the plan), absent targets are recorded failures, bad files exit 2."""
 
 import dataclasses
-import json
 
 import numpy as np
 import pytest
+from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
@@ -16,7 +16,6 @@ from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
 from ragnav_jax.world.scene import example_scene_path
-from test_memory_streams import synthetic_stream
 
 EPISODES = example_scene_path().parent / "episodes.jsonl"
 

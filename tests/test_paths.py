@@ -11,6 +11,7 @@ import pytest
 from ragnav_jax.memory.paths import (
     all_pairs_shortest_paths,
     batched_shortest_paths,
+    chunked_shortest_paths,
     connected_components,
     reconstruct_path,
     shortest_paths,
@@ -74,6 +75,20 @@ def test_apsp_batched_equals_single_and_traces_once():
     before = batched_shortest_paths._cache_size()
     batched_shortest_paths(W * 2.0, M[::-1])  # new values, same shapes: no retrace
     assert batched_shortest_paths._cache_size() == before
+
+
+def test_chunked_apsp_equals_batched():
+    # 7 graphs in blocks of 3: two full blocks and a remainder, one compiled call.
+    rng = np.random.default_rng(11)
+    graphs = [random_graph(rng, n, 12, 0.35) for n in (12, 3, 0, 9, 12, 7, 1)]
+    W = jnp.asarray(np.stack([g[0] for g in graphs]))
+    M = jnp.asarray(np.stack([g[1] for g in graphs]))
+    cost, pred = batched_shortest_paths(W, M)
+    c2, p2 = chunked_shortest_paths(W, M, chunk=3)
+    np.testing.assert_array_equal(np.asarray(c2), np.asarray(cost))
+    np.testing.assert_array_equal(np.asarray(p2), np.asarray(pred))
+    for b, (w, m) in enumerate(graphs):
+        check_against_networkx(w, m, np.asarray(c2[b]), np.asarray(p2[b]))
 
 
 def test_components():

@@ -5,6 +5,7 @@ import json
 import networkx as nx
 import numpy as np
 import pytest
+from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
@@ -13,7 +14,6 @@ from ragnav_jax.memory.checkpoint import save_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
 from ragnav_jax.planning.plan import plan_instruction
 from ragnav_jax.world.scene import save_scene
-from test_memory_streams import synthetic_stream
 
 
 @pytest.fixture(scope="module")

@@ -4,6 +4,7 @@ import json
 
 import numpy as np
 import pytest
+from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
@@ -12,7 +13,6 @@ from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
 from ragnav_jax.retrieval.evaluate import METHODS, evaluate_retrieval
 from ragnav_jax.world.scene import example_scene_path, save_scene
-from test_memory_streams import synthetic_stream
 
 EPISODES = example_scene_path().parent / "episodes.jsonl"
 

@@ -3,11 +3,10 @@
 import jax
 import jax.numpy as jnp
 import numpy as np
-import pytest
+import retrieval_reference as ref
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import retrieval_reference as ref
 from ragnav_jax.retrieval import kernels as K
 
 ATOL = 1e-5

@@ -2,10 +2,10 @@ import copy
 import json
 
 import pytest
+from conftest import SHARED
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import SHARED
 from ragnav_jax.cli import main
 from ragnav_jax.errors import SceneError
 from ragnav_jax.world.scene import (

@@ -106,8 +106,7 @@ def test_sweep_cli_table_heatmaps_and_resume(tiny_run, tmp_path):
     # Another grid in the same folder is refused unless --fresh.
     assert main(_sweep_args(run, episodes, out, "sweep.axes.eta=[0.0,0.5]")) == 2
     assert main(_sweep_args(run, episodes, out, "sweep.axes.eta=[0.0,0.5]", "--fresh")) == 0
-    # Lambda only enters navigation metrics; unknown variants are config errors.
-    assert main(_sweep_args(run, episodes, tmp_path / "l", "sweep.axes.lam=[0,5]")) == 2
+    # Unknown variants are config errors (the lambda axis: test_plan_metric.py).
     assert main(_sweep_args(run, episodes, tmp_path / "v", "sweep.variants=[nope]")) == 2
 
 

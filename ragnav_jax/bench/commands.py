@@ -32,6 +32,8 @@ def cmd_bench(args, cfg) -> int:
         return 0
     profile = PROFILES["gpu" if args.gpu else "quick" if args.quick else "full"]
     profile = scaled(profile, args.scale)
+    if args.set:
+        profile = override_profile(profile, args.set)
     log = (lambda m: None) if args.quiet else (lambda m: print(m, flush=True))
     doc = run_suite(args.out, profile, args.only or (), log=log, notes=args.notes, argv=sys.argv)
     failed = [k for k, v in doc["sections"].items() if v["status"] == "failed"]
@@ -50,5 +52,39 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--scale", type=float, default=1.0, help="multiply every size of the profile (e.g. --gpu --scale 0.001)")
     p.add_argument("--only", nargs="+", metavar="SECTION", help=f"run only these sections ({', '.join(SECTIONS)})")
     p.add_argument("--notes", default="", help="free text stored in the report (e.g. machine load)")
+    p.add_argument("--set", action="append", default=[], metavar="FIELD=VALUE",
+                   help="override a profile field, e.g. --set e2e_embedder=hashing --set sim_batches=1,64 (bench/profiles.py)")
     p.add_argument("--merge", nargs="+", metavar="RUN", help="combine earlier runs' bench.json into --out (later wins)")
     p.set_defaults(func=cmd_bench, overrides_allowed=False)
+
+
+def override_profile(profile, items: list[str]):
+    """The profile with FIELD=VALUE overrides applied; values parse by the field's type (tuples comma-separated)."""
+    import dataclasses
+
+    from ragnav_jax.errors import UserError
+
+    fields = {f.name: f for f in dataclasses.fields(profile)}
+    changes = {}
+    for item in items:
+        key, sep, raw = item.partition("=")
+        if not sep or key not in fields or key == "name":
+            known = ", ".join(k for k in fields if k != "name")
+            raise UserError(f"--set {item!r}: expected FIELD=VALUE with FIELD one of {known}")
+        cur = getattr(profile, key)
+        try:
+            if raw.lower() == "none":
+                val = None
+            elif isinstance(cur, tuple):
+                kind = type(cur[0]) if cur else int
+                val = tuple(kind(x) for x in raw.split(",") if x.strip())
+            elif isinstance(cur, str):
+                val = raw
+            elif isinstance(cur, float):
+                val = float(raw)
+            else:  # int, or None on an int | None field
+                val = int(raw)
+        except ValueError:
+            raise UserError(f"--set {key}={raw!r}: not a valid {type(cur).__name__}") from None
+        changes[key] = val
+    return profile.replace(name=profile.name + "+set", **changes)

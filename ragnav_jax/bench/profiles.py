@@ -27,6 +27,7 @@ class Profile:
     path_nodes: tuple[int, ...] = (80, 200)
     path_nx_sample: int = 50
     path_repeats: int | None = None  # timed repeats of the batched call (None: `repeats`)
+    path_chunk: int | None = None  # graphs in flight at once (lax.map over blocks; None: all in one vmap)
     # order planning: episodes, Python sample sizes
     plan_episodes: int = 10_000
     plan_python_bf: int = 20
@@ -74,9 +75,11 @@ FULL = Profile(
 GPU = Profile(
     name="gpu", repeats=5,
     retrieval_sizes=(80, 1000, 10000, 100000, 1_000_000),
-    retrieval_queries=(1_000_000, 1_000_000, 1_000_000, 1_000_000, 1_000_000),
+    # 1M queries where a pass takes seconds; fewer at 100k and 1M nodes, where each query scores the
+    # whole memory (throughput is per query either way; a 1M x 1M pass would take hours per repeat)
+    retrieval_queries=(1_000_000, 1_000_000, 262_144, 32_768, 4096),
     retrieval_chunk=4096, faiss_queries=4096,
-    path_graphs=16384, path_nodes=(80, 200, 500), path_nx_sample=50,
+    path_graphs=16384, path_nodes=(80, 200, 500), path_nx_sample=20, path_chunk=2048, path_repeats=3,
     plan_episodes=1_000_000, plan_python_bf=20, plan_python_hk=5,
     sim_batches=(1, 64, 1024, 4096, 8192, 16384), sim_steps=16, sim_c_steps=300,
     e2e_scenes=(1, 14, 64, 256, 1024), e2e_spacings=(0.8, 0.5, 0.3, 0.2), e2e_spacing_scenes=14,
@@ -107,6 +110,7 @@ def scaled(p: Profile, s: float) -> Profile:
         faiss_queries=None if p.faiss_queries is None else _s(p.faiss_queries, s, 4),
         path_graphs=_s(p.path_graphs, s, 4), path_nodes=uniq(_s(n, s, 8) for n in p.path_nodes),
         path_nx_sample=_s(p.path_nx_sample, s, 2),
+        path_chunk=None if p.path_chunk is None else _s(p.path_chunk, s, 2),
         plan_episodes=_s(p.plan_episodes, s, 8), plan_python_bf=_s(p.plan_python_bf, s, 1),
         plan_python_hk=_s(p.plan_python_hk, s, 1),
         sim_batches=uniq(_s(b, s, 1) for b in p.sim_batches), sim_steps=_s(p.sim_steps, s, 2),

@@ -7,6 +7,7 @@ scripts and the suite share one implementation.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import importlib.util
 import math
 import sys
@@ -126,15 +127,18 @@ def bench_paths(p: Profile, log: Callable[[str], None]) -> dict:
     import jax
     import networkx as nx
 
-    from ragnav_jax.memory.paths import batched_shortest_paths
+    from ragnav_jax.memory.paths import batched_shortest_paths, chunked_shortest_paths
 
+    apsp = batched_shortest_paths
+    if p.path_chunk is not None and p.path_chunk < p.path_graphs:
+        apsp = functools.partial(chunked_shortest_paths, chunk=p.path_chunk)  # bounded device memory
     rng = np.random.default_rng(1)
     rows, comps = [], []
     for n in p.path_nodes:
         w, mask = random_graphs(rng, p.path_graphs, n)
         wj, mj = jax.device_put(w), jax.device_put(mask)
         t0 = time.perf_counter()
-        compiled = batched_shortest_paths.lower(wj, mj).compile()
+        compiled = jax.jit(apsp).lower(wj, mj).compile()
         compile_s = time.perf_counter() - t0
         cost, _ = jax.block_until_ready(compiled(wj, mj))
         ts = []
@@ -157,7 +161,7 @@ def bench_paths(p: Profile, log: Callable[[str], None]) -> dict:
                 ref[g, a, list(row)] = list(row.values())
         agree = bool(np.allclose(cost[:sample], ref, rtol=1e-4, atol=1e-4))
         peer = stats(nts)
-        row = {"nodes": n, "graphs": p.path_graphs, "compile_s": compile_s, "jax": ours, "networkx": peer,
+        row = {"nodes": n, "graphs": p.path_graphs, "graph_chunk": p.path_chunk, "compile_s": compile_s, "jax": ours, "networkx": peer,
                "networkx_graphs_timed": sample, "networkx_extrapolated": sample < p.path_graphs,
                "mean_degree": float(np.isfinite(w).sum(-1).mean()), "agrees_with_networkx": agree}
         rows.append(row)
@@ -388,7 +392,7 @@ def bench_sweep(p: Profile, log: Callable[[str], None]) -> dict:
         try:
             first: dict = {}
             with stage_clock(first):
-                _, summary = run_sweep(cfg, art["batch"], art["meta"], None)
+                _, summary = run_sweep(cfg, art["batch"], art["meta"], None, bank=art["bank"], scenes=art["scenes"])
         except UserError as e:
             note = f"{label}: {e}"
             log(f"sweep: {label} not possible here ({e}); falling back")
@@ -396,7 +400,7 @@ def bench_sweep(p: Profile, log: Callable[[str], None]) -> dict:
         ts = []
         for _ in range(max(1, min(p.repeats, 3))):
             t0 = time.perf_counter()
-            run_sweep(cfg, art["batch"], art["meta"], None)
+            run_sweep(cfg, art["batch"], art["meta"], None, bank=art["bank"], scenes=art["scenes"])
             ts.append(time.perf_counter() - t0)
         points = summary["grid_points"]
         warm = stats(ts)

@@ -39,11 +39,12 @@ def cmd_sweep(args, cfg) -> int:
     init_run(out, cfg, "sweep")
     batch, meta = prepare_batch(bank, scenes, episodes, embedder)
     rows, summary = run_sweep(cfg, batch, meta, out, fresh=args.fresh, progress=not args.quiet,
-                              log=lambda m: print(m, flush=True))
+                              log=lambda m: print(m, flush=True), bank=bank, scenes=scenes)
     summary.update({"run": str(args.run), "episodes_file": str(args.episodes)})
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
-    for v, b in summary["best"].items():
-        print(f"best {v}: " + ", ".join(f"{k}={b[k]}" for k in b))
+    for key in ("best", "best_plan"):
+        for v, b in summary.get(key, {}).items():
+            print(f"{key} {v}: " + ", ".join(f"{k}={b[k]}" for k in b))
     print(f"{summary['grid_points']} grid points x {len(summary['modalities']) + 1} modalities -> {out / 'sweep.csv'}"
           f" ({summary['chunks_computed']} chunks computed, {summary['chunks_resumed']} resumed, "
           f"{summary['wall_s']} s); heatmaps in {out / 'heatmaps'}")

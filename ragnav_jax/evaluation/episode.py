@@ -31,8 +31,8 @@ import dataclasses
 import itertools
 import math
 import time
-from collections import Counter, defaultdict, deque
-from typing import Sequence
+from collections import defaultdict, deque
+from collections.abc import Sequence
 
 import jax
 import jax.numpy as jnp
@@ -182,7 +182,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     items = goal_items(episodes)
     per_ep: dict[str, list] = defaultdict(list)
     subgoals: dict[str, object] = {}
-    for ep, kk, goal, sg in items:
+    for ep, _kk, _goal, sg in items:
         subgoals.setdefault(ep.id, None)
         if sg is not None:
             subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
@@ -220,7 +220,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             slot_best = np.asarray(inst_fn(batch.index, batch.queries, p))  # (B, Q, N) slot index
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
-            for (ep, kk, goal, sg), sl in zip(bmeta.items, bmeta.slots):
+            for (ep, kk, _goal, _sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
                     nodes = [int(n) for n, s in zip(top_n[sl], top_s[sl]) if np.isfinite(s) and s > -1e8]
                     cand_of[(ep.id, kk)] = nodes
@@ -254,13 +254,13 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                 cand_of[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
         timing["retrieval_ms_single"] = timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
     elif spec.retrieval == "oracle":
-        for ep, kk, goal, sg in items:
+        for ep, kk, goal, _sg in items:
             b = names.index(ep.scene)
             gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
             node = _oracle_node(bank, b, gidx)
             cand_of[(ep.id, kk)] = [node] if node >= 0 else []
     est_ep: dict[str, list] = defaultdict(list)
-    for ep, kk, goal, sg in items:
+    for ep, kk, _goal, _sg in items:
         per_ep[ep.id].append(cand_of.get((ep.id, kk), []))
         est_ep[ep.id].append(est_of.get((ep.id, kk), [None] * len(cand_of.get((ep.id, kk), []))))
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,

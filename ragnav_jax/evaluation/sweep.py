@@ -13,9 +13,11 @@ last is padded), so the function compiles once. Each finished chunk can be saved
 (ChunkStore): a sweep that is killed and started again loads the finished chunks and computes only the
 rest, and its table is bit-for-bit that of an uninterrupted run (the sums are integers).
 
-Navigation metrics plug in as another GridMetric: fn(params chunk, lam (C,)) -> per-modality sums
-(V, C, G) with their denominators; the planning lambda axis (sweep.axes.lam) only reaches metrics with
-uses_lam=True. Issue 8's closed-loop evaluation provides one (see README).
+More metrics plug in as GridMetrics: fn(params chunk, lam (C,)) -> per-modality sums (V, C, G) with
+their denominators; the planning lambda axis (sweep.axes.lam) only reaches metrics with uses_lam=True.
+Given the memory bank and scenes, run_sweep adds `plan_success` (evaluation/plan_metric.py: top-1
+retrieval of every subgoal, then the exact visiting order under each point's lambda), so a sweep over
+sigma x eta x lambda scores retrieval and order planning in the same compiled chunks.
 """
 
 from __future__ import annotations
@@ -349,7 +351,8 @@ def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
                     ax.text(j, i, f"{100 * v:.1f}", ha="center", va="center", fontsize=5, color="w")
         fig.suptitle(f"{variant}: {metric} (%) over {x} x {y}" + (" (best over the other axes)" if len(
             [c for c in df.columns if c in AXES]) > 2 else ""), fontsize=10)
-        path = folder / f"{variant}_{x}_{y}.png"
+        tag = "" if metric == "retrieval_accuracy" else f"{metric}_"
+        path = folder / f"{variant}_{tag}{x}_{y}.png"
         fig.savefig(path, dpi=110)
         plt.close(fig)
         out.append(path)
@@ -358,22 +361,29 @@ def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
 
 def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | None = None, fresh: bool = False,
               progress: bool = False, log: Callable[[str], None] | None = None,
-              extra_metrics: Sequence[GridMetric] = ()) -> tuple[list[dict], dict]:
+              extra_metrics: Sequence[GridMetric] = (), bank=None, scenes=None) -> tuple[list[dict], dict]:
     """The configured sweep over one retrieval batch; with `out`, checkpoints, table, heatmaps and summary.
 
-    extra_metrics: more GridMetrics (navigation, issue 8) evaluated in the same chunks.
+    extra_metrics: more GridMetrics evaluated in the same chunks. bank, scenes: the batch's memory bank
+    and scenes; with them a sweep whose axes include lam also reports `plan_success` (plan_metric.py).
     Returns (rows, summary).
     """
     from ragnav_jax.retrieval.params import params_from_config
 
     grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)
-    if "lam" in grid.axes and not any(m.uses_lam for m in extra_metrics):
-        raise UserError("sweep.axes.lam: the planning lambda only changes navigation metrics (ragnav eval, "
-                        "issue 8, not available yet); retrieval accuracy does not depend on it")
     if batch is None:
         raise UserError("no instruction of the episodes file yields a subgoal: nothing to sweep")
+    extra = list(extra_metrics)
+    if "lam" in grid.axes and not any(m.uses_lam for m in extra):
+        if bank is None or scenes is None:
+            raise UserError("sweep.axes.lam: the planning lambda changes plan success only, which needs the "
+                            "memory bank and scenes (ragnav sweep passes them); retrieval accuracy does not "
+                            "depend on it")
+        from ragnav_jax.evaluation.plan_metric import plan_metric
+
+        extra.append(plan_metric(batch, meta, bank, scenes, grid))
     mesh = sharding.batch_mesh() if cfg.sweep.shard and jax.device_count() > 1 else None
-    metrics = [retrieval_metric(batch, meta, grid, mesh), *extra_metrics]
+    metrics = [retrieval_metric(batch, meta, grid, mesh), *extra]
     store = None
     if out is not None and cfg.sweep.checkpoint:
         C = chunk_shape(grid, cfg.sweep.chunk_size, mesh)
@@ -387,18 +397,22 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
             store.close()
     stats["wall_s"] = round(time.perf_counter() - t0, 3)
     rows = sweep_rows(grid, metrics, sums)
-    best = best_points(rows)
+    names = [m.name for m in metrics]
     summary = {
         "axes": {k: list(v) for k, v in grid.axes.items()}, "variants": list(grid.variants),
-        "modalities": list(meta.modalities), "queries": int(meta.totals.sum()),
-        "best": {v: {k: r[k] for k in ("point", *grid.axes, "retrieval_accuracy")} for v, r in best.items()},
+        "modalities": list(meta.modalities), "queries": int(meta.totals.sum()), "metrics": names,
+        "best": {v: {k: r[k] for k in ("point", *grid.axes, *names)} for v, r in best_points(rows).items()},
         **stats,
     }
+    if "plan_success" in names:
+        summary["best_plan"] = {v: {k: r[k] for k in ("point", *grid.axes, *names)}
+                                for v, r in best_points(rows, "plan_success").items()}
     if out is not None:
         from ragnav_jax.tables import write_table
 
         out = Path(out)
         write_table(rows, out / "sweep")
-        summary["heatmaps"] = [str(p) for p in plot_heatmaps(rows, cfg.sweep.heatmap, out / "heatmaps")]
+        summary["heatmaps"] = [str(p) for name in names
+                               for p in plot_heatmaps(rows, cfg.sweep.heatmap, out / "heatmaps", name)]
         (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     return rows, summary

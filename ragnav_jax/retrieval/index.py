@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax.numpy as jnp
 import numpy as np
@@ -188,7 +188,7 @@ def build_bank_index(bank: MemoryBank, scenes: Sequence[Scene], embedder, max_sl
     max_inst = max(count_instances(m, by_name[m.scene], max_slots) for m in bank.metas)
     out, metas = [], []
     for b, meta in enumerate(bank.metas):
-        mem = jax.tree.map(lambda x: x[b], bank.memory)
+        mem = jax.tree.map(lambda x, b=b: x[b], bank.memory)
         idx, im = build_scene_index(mem, meta, by_name[meta.scene], embedder, max_slots, max_degree, max_inst)
         out.append(idx)
         metas.append(im)

@@ -34,7 +34,7 @@ class RetrievalParams:
     use_boost: jnp.ndarray  # 1: neighbour boosting ("w/o neighbour enhancement" at 0)
 
     @staticmethod
-    def create(**overrides) -> "RetrievalParams":
+    def create(**overrides) -> RetrievalParams:
         base = dict(DEFAULTS)
         unknown = set(overrides) - set(base)
         if unknown:

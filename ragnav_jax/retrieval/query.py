@@ -6,7 +6,7 @@ see only fixed-shape arrays, so any number of subgoals, episodes and scenes batc
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import jax.numpy as jnp
 import numpy as np

@@ -7,7 +7,8 @@ with boolean masks; strings (ids, categories, sensor names) live in a host-side 
 from __future__ import annotations
 
 import dataclasses
-from typing import NamedTuple, Sequence
+from collections.abc import Sequence
+from typing import NamedTuple
 
 import jax.numpy as jnp
 import numpy as np

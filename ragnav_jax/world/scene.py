@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-from functools import lru_cache
+from functools import cache
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -114,7 +114,7 @@ class Scene:
 # Schema validation
 
 
-@lru_cache(maxsize=None)
+@cache
 def load_schema(name: str = "scene") -> dict:
     """The JSON schema shipped with the package: 'scene' or 'episode'."""
     text = resources.files("ragnav_jax.world").joinpath("schemas").joinpath(f"{name}.schema.json").read_text()
