@@ -89,6 +89,26 @@ def method_spec(name: str) -> MethodSpec:
             "oracle": MethodSpec(name, "oracle", False, True)}[name]
 
 
+def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:
+    """(4 * per_side + 12, 2) stops at distance `gap` from a box footprint (centre c, half sizes): along
+    each side's outward normal, and three directions round each corner."""
+    t = np.linspace(-1.0, 1.0, per_side + 2)[1:-1]
+    out = []
+    for axis in (0, 1):
+        other = 1 - axis
+        for sign in (-1.0, 1.0):
+            p = np.zeros((per_side, 2), np.float32)
+            p[:, axis] = c[axis] + sign * (half[axis] + gap)
+            p[:, other] = c[other] + t * half[other]
+            out.append(p)
+    for sx in (-1.0, 1.0):
+        for sy in (-1.0, 1.0):
+            corner = c + np.asarray([sx, sy]) * half
+            for a in (0.0, math.pi / 4, math.pi / 2):
+                out.append((corner + gap * np.asarray([sx * math.cos(a), sy * math.sin(a)]))[None])
+    return np.concatenate(out).astype(np.float32)
+
+
 # ----------------------------------------------------------------------------------------------------
 # Perception checks
 
@@ -621,15 +641,29 @@ class Loop:
         return xy[keep][: self.ex.path_points]
 
     def approach_points(self, st: EpisodeState, o: int, pose) -> np.ndarray:
+        """(1, 2) where to stop by object o: `approach_gap` from its footprint on the robot's side; where that
+        spot is no room for the robot (another object, a wall), the nearest free spot of a ring of stops
+        around the footprint. The leg is driven with the local planner (drive_points)."""
         obj = self.scenes[st.ep.scene].objects[o]
-        c = np.asarray(obj.position[:2])
-        half = np.asarray(obj.size[:2]) / 2
+        c = np.asarray(obj.position[:2], np.float32)
+        half = np.asarray(obj.size[:2], np.float32) / 2
         near = np.clip(pose[:2], c - half, c + half)  # closest point of the footprint
         v = pose[:2] - near
         n = np.linalg.norm(v)
         gap = self.cfg.eval.approach_gap + self.cfg.sim.robot_radius
-        goal = pose[:2] if n <= gap else near + v / n * gap
-        return np.asarray([goal], np.float32)
+        if n <= gap:
+            return np.asarray([pose[:2]], np.float32)
+        goal = (near + v / n * gap).astype(np.float32)
+        if st.b not in self.obstacles:
+            return goal[None]
+        ring = approach_ring(c, half, gap)  # (R, 2) stops at `gap` from the footprint
+        cand = np.concatenate([goal[None], ring])
+        free = segment_clearance_np(cand, cand, self.obstacles[st.b]) >= self._need()
+        if free[0] or not free.any():
+            return goal[None]
+        ring, ok = cand[1:], free[1:]
+        d = np.linalg.norm(ring - pose[None, :2], axis=1)
+        return ring[np.argmin(np.where(ok, d, np.inf))][None]
 
     # -- after a leg
     def after_leg(self, st: EpisodeState, leg: tuple, pose: np.ndarray, arrived: bool, visible: np.ndarray) -> None:
@@ -808,7 +842,10 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
         allow = np.zeros(B, np.int32)
         for i, leg in enumerate(legs):
             if leg is not None:
-                way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
+                if leg[0] == "approach":  # from where the robot stands, round whatever is in the way
+                    way = loop.drive_points(chunk[i], np.concatenate([poses[i][None, :2], leg[3]]))
+                else:
+                    way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
                 pts[i], n[i] = pad_points(way, P)
                 st = chunk[i]
                 allow[i] = max(min(cfg.eval.leg_max_steps, cfg.eval.max_steps - st.steps - st.look_steps), 0)

@@ -20,6 +20,10 @@ from ragnav_jax.retrieval.score import score_subgoal
 from ragnav_jax.world.scene import room_of
 
 
+# Compiled once per (subgoal count, index shape), shared by every call (a fresh jit per call recompiled).
+_score_subgoals = jax.jit(jax.vmap(score_subgoal, (None, 0, None)))
+
+
 def nearest_node(mem, xy) -> int:
     pos = np.asarray(mem.position)[:, :2]
     d = np.linalg.norm(pos - np.asarray(xy, np.float32), axis=1)
@@ -36,7 +40,7 @@ def plan_instruction(bank, scene, instruction: str, embedder, cfg) -> dict:
     chain = parse_instruction(instruction)
     queries = encode_subgoals(chain.subgoals, embedder, list(meta.sensor_names))
     params = params_from_config(cfg.retrieval)
-    scores, expl = jax.jit(jax.vmap(score_subgoal, (None, 0, None)))(index, queries, params)
+    scores, expl = _score_subgoals(index, queries, params)
     k = min(cfg.planning.top_k, int(mem.node_mask.shape[0]))
     top_s, top_n = jax.lax.top_k(scores, k)  # (G, k)
     valid = top_s > -1e8
