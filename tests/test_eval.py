@@ -114,3 +114,23 @@ def test_eval_cli_malformed_episodes_exit_2(tmp_path, capsys):
     rc = main(["eval", "--scenes", str(example_scene_path()), "--episodes", str(bad), "--out", str(tmp_path / "o")])
     assert rc == 2
     assert "line 2" in capsys.readouterr().err
+
+
+def test_distinct_instances_picks_one_candidate_per_instance():
+    from ragnav_jax.evaluation.episode import distinct_instances
+
+    assert distinct_instances([3, 3, 5, -1, -1, 5, 7], 4) == [0, 2, 3, 4]  # -1: no instance, always distinct
+    assert distinct_instances([2, 2, 2], 2) == [0, 1]  # fewer instances than k: topped up in rank order
+    assert distinct_instances([], 3) == []
+
+
+def test_approach_ring_stops_at_the_gap_from_the_footprint():
+    from types import SimpleNamespace
+
+    from ragnav_jax.evaluation.episode import approach_ring, box_distance
+
+    c, half = np.array([2.0, -1.0], np.float32), np.array([0.4, 0.25], np.float32)
+    ring = approach_ring(c, half, 0.6)
+    obj = SimpleNamespace(position=(2.0, -1.0, 0.0), size=(0.8, 0.5, 1.0))
+    np.testing.assert_allclose([box_distance(obj, p) for p in ring], 0.6, atol=1e-5)
+    assert len(ring) == 4 * 5 + 12 and len(np.unique(np.round(ring, 4), axis=0)) == len(ring)

@@ -61,6 +61,7 @@ TIGHT_PENALTY = 10.0  # driving-path cost factor of map edges that pass closer t
 GRID_M = 0.05  # occupancy grid of the local planner (metres per cell)
 GRID_MARGIN_M = 0.04  # clearance beyond the robot's radius the local planner keeps
 GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches
+CANDIDATE_DEPTH = 8  # ranked nodes per candidate slot searched for distinct instances
 CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
 
 
@@ -182,6 +183,21 @@ class Candidates:
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
 
 
+def distinct_instances(inst: Sequence[int], k: int) -> list[int]:
+    """Positions of the first k ranked candidates whose matched instances differ (-1: no instance, always
+    distinct); topped up with the best remaining ones when fewer than k instances are ranked. A rejected
+    candidate then hands over to another object, not to another view of the same one."""
+    pick, seen = [], set()
+    for j, c in enumerate(inst):
+        if len(pick) == k:
+            break
+        if c < 0 or c not in seen:
+            pick.append(j)
+            seen.add(c)
+    rest = [j for j in range(len(inst)) if j not in pick]
+    return pick + rest[: k - len(pick)]
+
+
 def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
     obs = np.asarray(bank.memory.obs_object[b])
     dist = np.asarray(bank.memory.obs_distance[b])
@@ -214,8 +230,10 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
         timing["embed_ms"] = bmeta.embed_ms
         if batch is not None:
+            # A deeper top list than k: candidates are then picked one per estimated instance (below).
+            deep = min(k * CANDIDATE_DEPTH, int(batch.index.node_mask.shape[-1]))
             fn = jax.jit(lambda i, q, pp: jax.lax.top_k(
-                jnp.where(i.node_mask[:, None, :], node_scores(i, q, pp), -jnp.inf), k))
+                jnp.where(i.node_mask[:, None, :], node_scores(i, q, pp), -jnp.inf), deep))
             jax.block_until_ready(fn(batch.index, batch.queries, p))
             t0 = time.perf_counter()
             top_s, top_n = jax.block_until_ready(fn(batch.index, batch.queries, p))
@@ -242,14 +260,12 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
             for (ep, kk, _goal, _sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
-                    nodes = [int(n) for n, s in zip(top_n[sl], top_s[sl]) if np.isfinite(s) and s > -1e8]
-                    cand_of[(ep.id, kk)] = nodes
+                    ranked = [int(n) for n, s in zip(top_n[sl], top_s[sl]) if np.isfinite(s) and s > -1e8]
                     b_, q_ = sl
-                    ests = []
-                    for n in nodes:
-                        c = slot_inst[b_, n, slot_best[b_, q_, n]]
-                        ests.append(inst_pos[b_, c].copy() if c >= 0 else None)
-                    est_of[(ep.id, kk)] = ests
+                    inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
+                    pick = distinct_instances(inst, k)
+                    cand_of[(ep.id, kk)] = [ranked[j] for j in pick]
+                    est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
     elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
         t_total, n_total = 0.0, 0
         for b, meta in enumerate(bank.metas):
@@ -665,6 +681,21 @@ class Loop:
         d = np.linalg.norm(ring - pose[None, :2], axis=1)
         return ring[np.argmin(np.where(ok, d, np.inf))][None]
 
+    def approach_route(self, st: EpisodeState, pose: np.ndarray, stop: np.ndarray) -> np.ndarray:
+        """(n, 2) waypoints from the robot's position to an approach stop: straight where the segment is
+        clear, else over the map (key pose nearest the robot -> key pose nearest the stop -> stop)."""
+        here, stop = np.asarray(pose[:2], np.float32), np.asarray(stop, np.float32)
+        direct = np.stack([here, stop])
+        if self.spec.straight or st.b not in self.obstacles:
+            return direct
+        if segment_clearance_np(here[None], stop[None], self.obstacles[st.b])[0] >= self._need():
+            return direct
+        a, t = self.attach(st.b, here), self.attach(st.b, stop)
+        path = reconstruct_path(self.drive_pred[st.b], a, t) or [a]
+        if len(path) <= 1 and np.linalg.norm(stop - here) <= np.linalg.norm(self.pos[st.b][path[0]] - here):
+            return direct
+        return np.concatenate([here[None], self.pos[st.b][path], stop[None]]).astype(np.float32)
+
     # -- after a leg
     def after_leg(self, st: EpisodeState, leg: tuple, pose: np.ndarray, arrived: bool, visible: np.ndarray) -> None:
         kind, g, payload, _ = leg
@@ -843,7 +874,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
         for i, leg in enumerate(legs):
             if leg is not None:
                 if leg[0] == "approach":  # from where the robot stands, round whatever is in the way
-                    way = loop.drive_points(chunk[i], np.concatenate([poses[i][None, :2], leg[3]]))
+                    way = loop.drive_points(chunk[i], loop.approach_route(chunk[i], poses[i], leg[3][-1]))
                 else:
                     way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
                 pts[i], n[i] = pad_points(way, P)
