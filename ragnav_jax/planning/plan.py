@@ -19,7 +19,6 @@ from ragnav_jax.retrieval.query import encode_subgoals
 from ragnav_jax.retrieval.score import score_subgoal
 from ragnav_jax.world.scene import room_of
 
-
 # Compiled once per (subgoal count, index shape), shared by every call (a fresh jit per call recompiled).
 _score_subgoals = jax.jit(jax.vmap(score_subgoal, (None, 0, None)))
 
