@@ -28,6 +28,7 @@ exploration from the start pose until the target is seen, then approaches it; in
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 import math
 import time
@@ -183,6 +184,21 @@ class Candidates:
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
 
 
+@functools.partial(jax.jit, static_argnames="deep")
+def _top_candidates(index, queries, params, deep: int):
+    """(scores, nodes) (B, Q, deep): the best-scoring real nodes of every subgoal slot."""
+    return jax.lax.top_k(jnp.where(index.node_mask[:, None, :], node_scores(index, queries, params), -jnp.inf), deep)
+
+
+@jax.jit
+def _matched_instances(index, queries, params):
+    """(B, Q, N) int32: the observation slot of each node that matched each subgoal best."""
+    return jax.vmap(lambda ii, qs: jax.vmap(lambda qq: score_subgoal(ii, qq, params)[1]["instance"])(qs))(index, queries)
+
+
+_score_single = jax.jit(score_subgoal)
+
+
 def distinct_instances(inst: Sequence[int], k: int) -> list[int]:
     """Positions of the first k ranked candidates whose matched instances differ (-1: no instance, always
     distinct); topped up with the best remaining ones when fewer than k instances are ranked. A rejected
@@ -232,8 +248,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         if batch is not None:
             # A deeper top list than k: candidates are then picked one per estimated instance (below).
             deep = min(k * CANDIDATE_DEPTH, int(batch.index.node_mask.shape[-1]))
-            fn = jax.jit(lambda i, q, pp: jax.lax.top_k(
-                jnp.where(i.node_mask[:, None, :], node_scores(i, q, pp), -jnp.inf), deep))
+            fn = functools.partial(_top_candidates, deep=deep)
             jax.block_until_ready(fn(batch.index, batch.queries, p))
             t0 = time.perf_counter()
             top_s, top_n = jax.block_until_ready(fn(batch.index, batch.queries, p))
@@ -243,7 +258,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
             idx0 = jax.tree.map(lambda x: x[b0], batch.index)
             q0 = jax.tree.map(lambda x: x[b0, s0], batch.queries)
-            single = jax.jit(score_subgoal)
+            single = _score_single
             jax.block_until_ready(single(idx0, q0, p))
             ts = []
             for _ in range(5):
@@ -253,9 +268,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
             # Where each candidate node's best-matching instance is (the index associates detections into
             # instances with estimated positions): the reflection looks for the target there.
-            inst_fn = jax.jit(lambda i, q, pp: jax.vmap(lambda ii, qs: jax.vmap(
-                lambda qq: score_subgoal(ii, qq, pp)[1]["instance"])(qs))(i, q))
-            slot_best = np.asarray(inst_fn(batch.index, batch.queries, p))  # (B, Q, N) slot index
+            slot_best = np.asarray(_matched_instances(batch.index, batch.queries, p))  # (B, Q, N) slot index
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
             for (ep, kk, _goal, _sg), sl in zip(bmeta.items, bmeta.slots):
@@ -369,6 +382,10 @@ class EpisodeState:
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
 
 
+_GRIDS: dict = {}  # (bank scene names, scenes' hash, clearance) -> {b: (origin, free)}
+_LOCAL_PLANS: dict = {}
+
+
 class Loop:
     """Host state machine of the episode loop; each phase hands one leg per episode to the executor."""
 
@@ -386,8 +403,10 @@ class Loop:
         self._seen: dict = {}
         self.look_cost = int(math.ceil(2 * math.pi / cfg.sim.max_yaw_rate / executor.control_dt))
         self.obstacles: dict = {}
-        self._grids: dict = {}
-        self._local_cache: dict = {}
+        # Occupancy grids and local plans depend on the scene alone: shared by every method's loop.
+        key = (tuple(bank.names), hash(tuple(self.scenes.get(n) for n in bank.names)), self._need())
+        self._grids = _GRIDS.setdefault(key, {})
+        self._local_cache = _LOCAL_PLANS.setdefault(key, {})
         self.drive_pred = self._drive_paths(bank)
         # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
         obs = np.asarray(bank.memory.obs_object)
