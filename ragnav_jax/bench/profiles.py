@@ -28,6 +28,7 @@ class Profile:
     path_nx_sample: int = 50
     path_repeats: int | None = None  # timed repeats of the batched call (None: `repeats`)
     path_chunk: int | None = None  # graphs in flight at once (lax.map over blocks; None: all in one vmap)
+    path_max_cells: int | None = None  # cap on graphs x n^2 per size (device memory; None: path_graphs always)
     # order planning: episodes, Python sample sizes
     plan_episodes: int = 10_000
     plan_python_bf: int = 20
@@ -80,6 +81,7 @@ GPU = Profile(
     retrieval_queries=(1_000_000, 1_000_000, 262_144, 32_768, 4096),
     retrieval_chunk=4096, faiss_queries=4096,
     path_graphs=16384, path_nodes=(80, 200, 500), path_nx_sample=20, path_chunk=2048, path_repeats=3,
+    path_max_cells=16384 * 200 * 200,  # n=500: 2621 graphs (16384 would need ~50 GB for inputs and outputs)
     plan_episodes=1_000_000, plan_python_bf=20, plan_python_hk=5,
     sim_batches=(1, 64, 1024, 4096, 8192, 16384), sim_steps=16, sim_c_steps=300,
     e2e_scenes=(1, 14, 64, 256, 1024), e2e_spacings=(0.8, 0.5, 0.3, 0.2), e2e_spacing_scenes=14,

@@ -144,9 +144,10 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     def fits(o) -> bool:  # head, attributes, relations (anchors in the pool), hint, sensor thresholds
         if not head_matches(o, t.head) or not set(t.attributes) <= set(facts.attrs[o.id]):
             return False
-        for r in t.relations:
+        for r in t.relations:  # an anchor neither in view nor in memory leaves the relation unverifiable:
+            # it does not count against the object (the retrieval already scored it); one that is there must hold
             anchors = [a for a in pool if head_matches(a, r.anchor.head) and set(r.anchor.attributes) <= set(facts.attrs[a.id])]
-            if not any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors):
+            if anchors and not any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors):
                 return False
         if sg.location is not None and math.dist(o.position[:2], (sg.location.x, sg.location.y)) > location_radius:
             return False
