@@ -435,9 +435,12 @@ class EvalConfig:
     strict_lam: float = 1.0e4  # planning lambda for strict episodes (metres per order inversion)
     batch_size: int = 512  # episodes executed together in one vmapped call
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
+    memory_fallback: int = 2  # RAGNav's reflection: candidates exhausted -> up to this many recorded objects that
+    # pass the check on the memory's records (0: off)
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
+        _check(self.memory_fallback >= 0, "eval.memory_fallback", "must be >= 0")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",

@@ -119,3 +119,48 @@ def test_profile_overrides_parse_and_reject():
         override_profile(GPU, ["no_such_field=1"])
     with pytest.raises(UserError, match="not a valid int"):
         override_profile(GPU, ["sweep_points=many"])
+
+
+def test_retrieval_blocks_are_capped_by_cells_and_a_failing_size_keeps_the_others(monkeypatch):
+    # retrieval_max_cells bounds queries x nodes per block and the faiss batch (1M nodes on an 80 GB GPU);
+    # a size that fails (device memory) is recorded with its error and the next sizes still run
+    from ragnav_jax.bench import sections
+    from ragnav_jax.bench.profiles import QUICK
+
+    p = QUICK.replace(retrieval_sizes=(16, 64, 32), retrieval_queries=(8, 8, 8), retrieval_chunk=None,
+                      faiss_queries=None, retrieval_max_cells=128, repeats=2)
+    mod = sections.experiment("bench_retrieval")
+    real = mod.bench_size
+
+    def flaky(n, *a, **kw):
+        if n == 64:
+            raise MemoryError("RESOURCE_EXHAUSTED: pretend")
+        return real(n, *a, **kw)
+
+    monkeypatch.setattr(mod, "bench_size", flaky)
+    res = sections.bench_retrieval(p, lambda s: None)
+    by_n = {r["nodes"]: r for r in res["rows"]}
+    assert by_n[16]["query_chunk"] == 8 and by_n[32]["query_chunk"] == 4  # 128 cells // 32 nodes
+    assert "RESOURCE_EXHAUSTED" in by_n[64]["error"] and "single" not in by_n[64]
+    if by_n[32]["sim_faiss"] is not None:
+        assert by_n[32]["sim_faiss_queries"] == 4
+    from ragnav_jax.bench.report import readme_table
+    doc = {"machine": {"device_kind": None, "jax_backend": "cpu"}, "profile": "t", "comparisons": res["comparisons"],
+           "sections": {"retrieval": {"status": "ok", **res}}}
+    assert sum("retrieval," in line for line in readme_table(doc)) == 2
+
+
+def test_merge_section_combines_rows_per_size():
+    from ragnav_jax.bench.suite import _merge_section
+
+    a = {"status": "partial", "rows": [{"nodes": 80, "v": 1}, {"nodes": 1000, "v": 1}],
+         "comparisons": [{"name": "n80"}, {"name": "n1000"}], "section_wall_s": 2.0}
+    b = {"status": "ok", "rows": [{"nodes": 1000, "v": 2}, {"nodes": 10**6, "v": 2}], "comparisons": [{"name": "n1M"}],
+         "section_wall_s": 3.0}
+    m = _merge_section(a, b, "nodes")
+    assert [(r["nodes"], r["v"]) for r in m["rows"]] == [(80, 1), (1000, 2), (10**6, 2)]
+    assert [c["name"] for c in m["comparisons"]] == ["n80", "n1000", "n1M"]
+    assert m["status"] == "ok" and m["merged_statuses"] == ["partial", "ok"] and m["section_wall_s"] == 5.0
+    failed = {"status": "failed", "reason": "OOM"}
+    assert _merge_section(b, failed, "nodes") is b and _merge_section(failed, b, "nodes") is b
+    assert _merge_section({"status": "ok", "x": 1}, {"status": "ok", "x": 2}, None)["x"] == 2

@@ -134,3 +134,74 @@ def test_approach_ring_stops_at_the_gap_from_the_footprint():
     obj = SimpleNamespace(position=(2.0, -1.0, 0.0), size=(0.8, 0.5, 1.0))
     np.testing.assert_allclose([box_distance(obj, p) for p in ring], 0.6, atol=1e-5)
     assert len(ring) == 4 * 5 + 12 and len(np.unique(np.round(ring, 4), axis=0)) == len(ring)
+
+
+def test_attrs_match_reads_words_of_attribute_phrases():
+    from hypothesis import given
+    from hypothesis import strategies as st
+
+    from ragnav_jax.language.episodes import attrs_match
+
+    # the parser splits 'black metal shoe rack' into ('black', 'metal'); the generator writes 'black metal'
+    assert attrs_match(("black", "metal"), ("black metal",)) and attrs_match((), ("oak",))
+    assert attrs_match(("green",), ("dark green",)) and not attrs_match(("dark green",), ("green",))
+    assert not attrs_match(("white",), ("black metal",))
+
+    @given(st.lists(st.lists(st.sampled_from(["black", "metal", "oak", "dark", "green"]), min_size=1, max_size=3),
+                    max_size=3))
+    def split_phrases_always_match(phrases):
+        has = tuple(" ".join(p) for p in phrases)
+        assert attrs_match(tuple(w for p in phrases for w in p), has)
+        assert attrs_match(has, has)
+
+    split_phrases_always_match()
+
+
+def test_confirm_checks_the_room_type_inferred_from_the_records(apartment):
+    from ragnav_jax.evaluation.episode import inferred_room_type
+
+    cfg = load_config(None, [])
+    facts = SceneFacts.build(apartment, cfg.episodes)
+    objs = apartment.objects
+    everything = list(range(len(objs)))
+    for r in apartment.rooms:  # every room's contents name its type
+        assert inferred_room_type(r.id, objs) == r.type
+    room_of = {r.id: r.type for r in apartment.rooms}
+    plants = {room_of[objs[i].room] for i in everything if objs[i].category == "potted plant"}
+    assert plants == {"living room", "study"}
+    for room in plants:
+        sg = parse_instruction(f"Go to the potted plant in the {room}.").subgoals[0]
+        got = confirm(facts, sg, everything, 1.0, known=everything)
+        assert got and {room_of[objs[i].room] for i in got} == {room}
+        assert len(confirm(facts, sg, everything, 1.0)) > len(got)  # without records rooms are not checked
+
+
+def test_memory_fallback_adds_recorded_objects_once_candidates_are_spent(setup, apartment):
+    from ragnav_jax.evaluation.episode import EpisodeState, Loop, method_spec
+
+    cfg, bank, streams, emb, ex = setup
+    ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
+    sg = parse_instruction(ep.instruction).subgoals
+
+    def state():  # one candidate, at a key pose far from the fridge, already on its last retry
+        far = int(np.argmax(np.linalg.norm(np.asarray(bank.memory.position)[0, :, :2]
+                                           - np.asarray(apartment.objects[[o.id for o in apartment.objects].index("fridge_1")].position[:2]), axis=1)
+                            * np.asarray(bank.memory.node_mask)[0]))
+        return EpisodeState(0, ep, 0, 0, sg, [[far]], [[None]], [0], [0], [0], 0, ["pending"])
+
+    for k, expect in ((2, True), (0, False)):
+        c = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, memory_fallback=k, retries=0))
+        loop = Loop(method_spec("ragnav"), bank, [apartment], c, ex, streams)
+        st = state()
+        loop.reject(st, 0, "not_confirmed")
+        if not expect:
+            assert st.status == ["failed:not_confirmed"] and st.remaining == []
+            continue
+        node = loop.current(st, 0)
+        assert st.status == ["pending"] and node is not None and len(st.cands[0]) == 2
+        fridge = apartment.objects[[o.id for o in apartment.objects].index("fridge_1")]
+        assert np.allclose(st.ests[0][1], fridge.position[:2])
+        loop.reject(st, 0, "not_confirmed")  # the fallback is spent: a second rejection gives the goal up
+        assert st.status == ["failed:not_confirmed"]
+    loop = Loop(method_spec("naive_rag"), bank, [apartment], cfg, ex, streams)  # baselines keep their retrieval
+    assert not loop.fall_back(state(), 0)

@@ -21,6 +21,7 @@ class Profile:
     retrieval_sizes: tuple[int, ...] = (80, 1000, 10000, 100000)
     retrieval_queries: tuple[int, ...] = (256, 256, 256, 64)
     retrieval_chunk: int | None = None
+    retrieval_max_cells: int | None = None  # cap on queries x nodes per block and per faiss batch (memory, time)
     faiss_queries: int | None = None  # cap on the queries faiss searches (compared per query)
     # shortest paths: graphs per batch and node counts; networkx on a sample, extrapolated
     path_graphs: int = 1000
@@ -80,6 +81,9 @@ GPU = Profile(
     # whole memory (throughput is per query either way; a 1M x 1M pass would take hours per repeat)
     retrieval_queries=(1_000_000, 1_000_000, 262_144, 32_768, 4096),
     retrieval_chunk=4096, faiss_queries=4096,
+    # 4096 x 100k cells per block fit an 80 GB GPU (about 40 bytes a cell in the fused scoring); 1M nodes
+    # then run in blocks of 409 queries (4096 at once asked for 168 GiB) and faiss times 409 queries
+    retrieval_max_cells=4096 * 100_000,
     path_graphs=16384, path_nodes=(80, 200, 500), path_nx_sample=20, path_chunk=2048, path_repeats=3,
     path_max_cells=16384 * 200 * 200,  # n=500: 2621 graphs (16384 would need ~50 GB for inputs and outputs)
     plan_episodes=1_000_000, plan_python_bf=20, plan_python_hk=5,
@@ -110,6 +114,7 @@ def scaled(p: Profile, s: float) -> Profile:
         retrieval_sizes=sizes, retrieval_queries=tuple(_s(q, s, 8) for q in p.retrieval_queries[: len(sizes)]),
         retrieval_chunk=None if p.retrieval_chunk is None else _s(p.retrieval_chunk, s, 4),
         faiss_queries=None if p.faiss_queries is None else _s(p.faiss_queries, s, 4),
+        retrieval_max_cells=None if p.retrieval_max_cells is None else _s(p.retrieval_max_cells, s * s, 64),
         path_graphs=_s(p.path_graphs, s, 4), path_nodes=uniq(_s(n, s, 8) for n in p.path_nodes),
         path_nx_sample=_s(p.path_nx_sample, s, 2),
         path_chunk=None if p.path_chunk is None else _s(p.path_chunk, s, 2),

@@ -34,12 +34,17 @@ def comparison_table(comps: list[dict]) -> list[str]:
     return lines
 
 
+def _ok_rows(section: dict) -> list[dict]:
+    """The rows of a section that were measured (a size that failed carries an 'error' instead)."""
+    return [r for r in section.get("rows", []) if "error" not in r]
+
+
 def readme_table(doc: dict) -> list[str]:
     """The compact table of the README's Performance section (one CPU column; a GPU column can be added)."""
     col = f"{doc['machine']['device_kind'] or doc['machine']['jax_backend']} ({doc['profile']})"
     lines = [f"| figure | {col} |", "|---|---:|"]
     secs = doc["sections"]
-    for r in secs.get("retrieval", {}).get("rows", []):
+    for r in _ok_rows(secs.get("retrieval", {})):
         lines.append(f"| retrieval, {r['nodes']} nodes: single query / batched | {r['single_ms']:.2f} ms / "
                      f"{r['batched_queries_per_s']:.0f} q/s |")
     for c in doc["comparisons"]:
@@ -64,7 +69,7 @@ def _plots(doc: dict, out: Path) -> list[str]:
 
     made = []
     secs = doc["sections"]
-    rows = secs.get("retrieval", {}).get("rows", [])
+    rows = _ok_rows(secs.get("retrieval", {}))
     if rows:
         fig, ax = plt.subplots(figsize=(5.5, 3.8))
         n = [r["nodes"] for r in rows]
@@ -73,8 +78,10 @@ def _plots(doc: dict, out: Path) -> list[str]:
                   label="RAGNav score, batched (per query)")
         ax.loglog(n, [1e3 * r["sim_jax"]["median_s"] / r["batch_queries"] for r in rows], "^-",
                   label="similarity only, JAX (per query)")
-        ax.loglog(n, [1e3 * r["sim_faiss"]["median_s"] / r["sim_faiss_queries"] for r in rows], "v--",
-                  label="similarity only, faiss IndexFlatIP")
+        fr = [r for r in rows if r.get("sim_faiss")]
+        if fr:
+            ax.loglog([r["nodes"] for r in fr], [1e3 * r["sim_faiss"]["median_s"] / r["sim_faiss_queries"] for r in fr],
+                      "v--", label="similarity only, faiss IndexFlatIP")
         ax.axhspan(185, 195, color="0.8", label="paper, 185-195 ms")
         ax.set(xlabel="memory nodes", ylabel="ms per query", title="Retrieval latency")
         ax.legend(fontsize=7)
@@ -150,10 +157,15 @@ def write_report(doc: dict, out: Path) -> Path:
               "queries | faiss / JAX per query (similarity) | top-1 agreement | paper 185-195 ms / ours |",
               "|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for x in r["rows"]:
+            if "error" in x:
+                L.append(f"| {x['nodes']} | failed: {x['error'][:120]} | | | {x['batch_queries']} | | | |")
+                continue
             s1 = x["single"]
+            faiss = "-" if x["sim_faiss"] is None else f"{x['sim_ratio_faiss_over_jax']:.2f}"
+            agree = "-" if x["sim_top1_agreement"] is None else f"{x['sim_top1_agreement']:.3f}"
             L.append(f"| {x['nodes']} | {1e3 * s1['median_s']:.2f} [{1e3 * s1['min_s']:.2f}-{1e3 * s1['max_s']:.2f}] | "
                      f"{x['compile_single_s']:.1f} | {x['batched_queries_per_s']:.0f} | {x['batch_queries']} | "
-                     f"{x['sim_ratio_faiss_over_jax']:.2f} | {x['sim_top1_agreement']:.3f} | {x['speedup_vs_paper_single']:.0f}x |")
+                     f"{faiss} | {agree} | {x['speedup_vs_paper_single']:.0f}x |")
         L.append("")
     p = secs.get("paths", {})
     if p.get("rows"):

@@ -81,7 +81,18 @@ def bench_retrieval(p: Profile, log: Callable[[str], None]) -> dict:
     rng = np.random.default_rng(0)
     rows, comps = [], []
     for n, q in zip(p.retrieval_sizes, p.retrieval_queries):
-        r = mod.bench_size(n, 384, q, p.repeats, rng, chunk=p.retrieval_chunk, faiss_queries=p.faiss_queries)
+        chunk, fq = p.retrieval_chunk, p.faiss_queries
+        if p.retrieval_max_cells is not None:  # large memories: fewer queries per block, fewer timed in faiss
+            cap = max(1, p.retrieval_max_cells // n)
+            chunk = min(chunk or q, cap)
+            fq = min(fq or q, cap)
+        try:
+            r = mod.bench_size(n, 384, q, p.repeats, rng, chunk=chunk, faiss_queries=fq)
+        except Exception as e:  # noqa: BLE001 - one size failing (e.g. device memory) keeps the others
+            rows.append({"nodes": n, "batch_queries": q, "query_chunk": chunk, "error": f"{type(e).__name__}: {e}"[:500]})
+            _partial({"rows": rows, "comparisons": comps})
+            log(f"retrieval N={n}: FAILED {type(e).__name__}: {str(e)[:200]}")
+            continue
         r["batched_queries_per_s_range"] = [q / r["batched"]["max_s"], q / r["batched"]["min_s"]]
         rows.append(r)
         fq = r["sim_faiss_queries"]

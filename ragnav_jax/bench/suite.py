@@ -97,6 +97,32 @@ def _pkg_versions(base: dict) -> dict:
     return base
 
 
+ROW_KEYS = {"retrieval": "nodes", "paths": "nodes", "simulation": "batch"}  # one row per size in these sections
+
+
+def _merge_section(old: dict | None, new: dict, key: str | None) -> dict:
+    """A section seen in two runs: the later replaces it, except that sections with one row per size (key)
+    combine their measured rows, the later winning per size (e.g. 1M nodes run apart from the smaller sizes),
+    and a later failure keeps the earlier measurement."""
+    if old is None:
+        return new
+    if new.get("status") == "failed":  # a later failure does not erase an earlier measurement
+        return old if old.get("rows") or old.get("status") == "ok" else new
+    if key is None or not old.get("rows"):
+        return new
+    rows = {r[key]: r for r in old["rows"]}
+    rows.update({r[key]: r for r in new.get("rows", [])})
+    comps = {c["name"]: c for c in old.get("comparisons", [])}
+    comps.update({c["name"]: c for c in new.get("comparisons", [])})
+    merged = {**new, "rows": sorted(rows.values(), key=lambda r: r[key]), "comparisons": list(comps.values())}
+    merged["section_wall_s"] = old.get("section_wall_s", 0.0) + new.get("section_wall_s", 0.0)
+    merged["section_cpu_s"] = old.get("section_cpu_s", 0.0) + new.get("section_cpu_s", 0.0)
+    merged["merged_statuses"] = [*old.get("merged_statuses", [old.get("status")]), new.get("status")]
+    if new.get("status") == "ok" and old.get("status") in ("ok", "partial"):
+        merged["status"] = "ok"  # every row present is a complete measurement; the statuses are kept above
+    return merged
+
+
 def merge_runs(out: str | Path, parts: Sequence[str | Path], log: Callable[[str], None] = print) -> dict:
     """One report from several runs' bench.json (e.g. one `--only` section per command on a machine that
     limits command length): sections of later parts win; the machine and settings of the first part are
@@ -107,7 +133,8 @@ def merge_runs(out: str | Path, parts: Sequence[str | Path], log: Callable[[str]
     doc = dict(docs[0])
     doc["sections"] = {}
     for d in docs:
-        doc["sections"].update(d["sections"])
+        for name, sec in d["sections"].items():
+            doc["sections"][name] = _merge_section(doc["sections"].get(name), sec, ROW_KEYS.get(name))
     doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
     doc["total_wall_s"] = sum(d.get("total_wall_s", 0.0) for d in docs)
     doc["process_max_rss_mb"] = max(d.get("process_max_rss_mb", 0.0) for d in docs)

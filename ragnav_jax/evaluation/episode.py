@@ -32,7 +32,7 @@ import functools
 import itertools
 import math
 import time
-from collections import defaultdict, deque
+from collections import Counter, defaultdict, deque
 from collections.abc import Sequence
 
 import jax
@@ -42,7 +42,7 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.language.episodes import Episode, SceneFacts, head_matches, relation_holds, sensor_holds
+from ragnav_jax.language.episodes import Episode, SceneFacts, attrs_match, head_matches, relation_holds, sensor_holds
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
@@ -122,6 +122,20 @@ def box_distance(obj, xy) -> float:
     return math.hypot(dx, dy)
 
 
+@functools.cache
+def _summariser():
+    from ragnav_jax.memory.summarise import Summariser
+
+    return Summariser()
+
+
+def inferred_room_type(room: str, pool: Sequence) -> str:
+    """The type of room `room` inferred from the categories of the objects of `pool` in it (the forest
+    summariser's room prototypes; the robot tells rooms apart by their walls, not by ground-truth labels)."""
+    counts = Counter(o.category for o in pool if o.room == room)
+    return _summariser().infer_type(counts, 2)[0]
+
+
 def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_radius: float,
             known: Sequence[int] | None = None) -> list[int]:
     """Visible objects (indices into scene.objects) that the robot's check accepts as sg's target.
@@ -133,8 +147,8 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     checked against anchors seen now *or* recorded, and a superlative ranks the object among the
     recorded instances of its description (within its own room when the subgoal names one, since the
     retrieval's room term chose that room). Without `known` only the current view counts and
-    superlatives are not checked. Room names themselves are not checked here: the caller prefers the
-    object at the retrieved instance's estimated position, which the room term selected.
+    superlatives are not checked. With `known`, a room name is checked against the room type inferred
+    from the objects recorded in the object's room (inferred_room_type); without it, rooms are not checked.
     """
     objs = facts.scene.objects
     pool_idx = sorted(set(visible) | set(known or ()))
@@ -142,11 +156,11 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     t = sg.target
 
     def fits(o) -> bool:  # head, attributes, relations (anchors in the pool), hint, sensor thresholds
-        if not head_matches(o, t.head) or not set(t.attributes) <= set(facts.attrs[o.id]):
+        if not head_matches(o, t.head) or not attrs_match(t.attributes, facts.attrs[o.id]):
             return False
         for r in t.relations:  # an anchor neither in view nor in memory leaves the relation unverifiable:
             # it does not count against the object (the retrieval already scored it); one that is there must hold
-            anchors = [a for a in pool if head_matches(a, r.anchor.head) and set(r.anchor.attributes) <= set(facts.attrs[a.id])]
+            anchors = [a for a in pool if head_matches(a, r.anchor.head) and attrs_match(r.anchor.attributes, facts.attrs[a.id])]
             if anchors and not any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors):
                 return False
         if sg.location is not None and math.dist(o.position[:2], (sg.location.x, sg.location.y)) > location_radius:
@@ -159,6 +173,8 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     out = [i for i in visible if fits(objs[i])]
     if known is None:
         return out
+    if sg.room is not None:  # the room's type as the robot infers it from what it recorded there
+        out = [i for i in out if inferred_room_type(objs[i].room, pool) == sg.room]
     for c in sg.sensors:
         if c.is_superlative and out:
             keep = []
@@ -381,6 +397,7 @@ class EpisodeState:
     skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
+    extra: dict = dataclasses.field(default_factory=dict)  # per goal: candidates added by the memory fallback
 
 
 _GRIDS: dict = {}  # (bank scene names, scenes' hash, clearance) -> {b: (origin, free)}
@@ -412,6 +429,12 @@ class Loop:
         # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
         obs = np.asarray(bank.memory.obs_object)
         self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
+        self.seen_at = []  # per scene: object -> key poses that recorded it
+        for b in range(obs.shape[0]):
+            d: dict = {}
+            for n, o in zip(*np.nonzero((obs[b] >= 0) & self.mask[b][:, None])):
+                d.setdefault(int(obs[b][n, o]), []).append(int(n))
+            self.seen_at.append(d)
 
     # -- helpers
     def _drive_paths(self, bank: MemoryBank) -> np.ndarray:
@@ -542,7 +565,7 @@ class Loop:
 
     def current(self, st: EpisodeState, g: int) -> int | None:
         c = st.cands[g]
-        if st.rejected[g] > self.cfg.eval.retries or st.cptr[g] >= len(c):
+        if st.rejected[g] > self.cfg.eval.retries + st.extra.get(g, 0) or st.cptr[g] >= len(c):
             return None
         return c[st.cptr[g]]
 
@@ -581,10 +604,46 @@ class Loop:
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
         st.cptr[g] += 1
         st.rejected[g] += 1
-        if self.current(st, g) is None:
+        if self.current(st, g) is None and not self.fall_back(st, g):
             st.status[g] = f"failed:{why}"
             st.remaining.remove(g)
         self.replan(st)
+
+    def fall_back(self, st: EpisodeState, g: int) -> bool:
+        """RAGNav's reflection once the retrieved candidates are spent: the objects the memory recorded that
+        pass the check on their records (head, attributes, relations, hint, sensors, superlatives ranked
+        over the records) and lie away from every instance already tried become up to
+        `eval.memory_fallback` new candidates, nearest first, each at the key pose that recorded it closest.
+        Once per goal; ragnav variants only (the baselines keep their own retrieval). True if any was added."""
+        k = self.cfg.eval.memory_fallback
+        if (k <= 0 or g in st.extra or st.subgoals is None or self.spec.retrieval in ("oracle", "etpnav", "remembr")
+                or self.spec.retrieval in BASELINES):
+            return False
+        st.extra[g] = 0
+        objs = self.scenes[st.ep.scene].objects
+        tried = [e for e in st.ests[g][: st.cptr[g]] if e is not None]
+        recs = confirm(self.facts[st.ep.scene], st.subgoals[g], self.known[st.b], self.cfg.episodes.location_radius,
+                       known=self.known[st.b])
+        recs = [o for o in recs if (g, o) not in st.skip and o in self.seen_at[st.b]
+                and all(box_distance(objs[o], e) > SAME_INSTANCE_M for e in tried)]
+        if not recs:
+            return False
+        cost = self.order_cost(st.b)[st.node]
+        new = []
+        for o in recs:
+            xy = np.asarray(objs[o].position[:2], np.float32)
+            nodes = self.seen_at[st.b][o]
+            n = nodes[int(np.argmin(np.linalg.norm(self.pos[st.b][nodes] - xy[None], axis=1)))]
+            if np.isfinite(cost[n]):
+                new.append((float(cost[n]), n, xy))
+        new = sorted(new, key=lambda t: t[0])[:k]
+        if not new:
+            return False
+        c = st.cptr[g]
+        st.cands[g] = list(st.cands[g][:c]) + [n for _, n, _ in new]
+        st.ests[g] = list(st.ests[g][:c]) + [xy for _, _, xy in new]
+        st.extra[g] = max(0, st.rejected[g] - 1 + len(new) - self.cfg.eval.retries)  # exactly len(new) more tries
+        return self.current(st, g) is not None
 
     def goal_object(self, st: EpisodeState, g: int):
         sc = self.scenes[st.ep.scene]

@@ -269,6 +269,13 @@ def head_matches(o: SceneObject, head: str) -> bool:
     return head == o.category or head in SYNONYMS.get(o.category, ()) or o.category in HYPERNYMS.get(head, ())
 
 
+def attrs_match(wanted: Sequence[str], has: Sequence[str]) -> bool:
+    """Every word of the wanted attributes is a word of the object's attribute phrases: the parser splits
+    'black metal shoe rack' into ('black', 'metal') while the generator writes the phrase 'black metal'."""
+    have = {w for a in has for w in a.split()}
+    return all(w in have for a in wanted for w in a.split())
+
+
 def box_gap(a: SceneObject, b: SceneObject) -> float:
     """Horizontal distance between two objects' footprints (0 when they overlap)."""
     dx = max(0.0, abs(a.position[0] - b.position[0]) - (a.size[0] + b.size[0]) / 2)
@@ -300,7 +307,7 @@ def resolve_target(facts: SceneFacts, t: Target) -> list[SceneObject]:
     named = facts.by_head.get(t.head)
     if named is None:
         named = [o for o in facts.scene.objects if head_matches(o, t.head)]
-    out = [o for o in named if set(t.attributes) <= set(facts.attrs[o.id])] if t.attributes else list(named)
+    out = [o for o in named if attrs_match(t.attributes, facts.attrs[o.id])] if t.attributes else list(named)
     for r in t.relations:
         anchors = resolve_target(facts, r.anchor)
         out = [o for o in out if any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors)]
