@@ -205,3 +205,25 @@ def test_memory_fallback_adds_recorded_objects_once_candidates_are_spent(setup, 
         assert st.status == ["failed:not_confirmed"]
     loop = Loop(method_spec("naive_rag"), bank, [apartment], cfg, ex, streams)  # baselines keep their retrieval
     assert not loop.fall_back(state(), 0)
+
+
+def test_precheck_skips_a_candidate_whose_record_fails_the_check(setup, apartment):
+    from ragnav_jax.evaluation.episode import EpisodeState, Loop, method_spec
+
+    cfg, bank, streams, emb, ex = setup
+    objs = apartment.objects
+    ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
+    sg = parse_instruction(ep.instruction).subgoals
+    fridge = next(o for o in objs if o.id == "fridge_1")
+    other = next(o for o in objs if o.category != "fridge")
+    loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
+    assert loop.known[0] and objs.index(fridge) in loop.known[0] and objs.index(other) in loop.known[0]
+
+    def state(est):
+        return EpisodeState(0, ep, 0, 0, sg, [[0]], [[np.asarray(est, np.float32)]], [0], [0], [0], 0, ["pending"])
+
+    assert loop.plausible(state(fridge.position[:2]), 0)  # the record there is a fridge
+    assert not loop.plausible(state(other.position[:2]), 0)  # a recorded non-fridge: ruled out before driving
+    assert loop.plausible(state((-50.0, -50.0)), 0)  # nothing on record there: nothing to judge by
+    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, precheck=False))
+    assert Loop(method_spec("ragnav"), bank, [apartment], off, ex, streams).plausible(state(other.position[:2]), 0)

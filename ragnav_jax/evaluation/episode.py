@@ -609,6 +609,26 @@ class Loop:
             st.remaining.remove(g)
         self.replan(st)
 
+    def _reflects(self) -> bool:
+        """RAGNav's reflection (pre-check and memory fallback): ragnav variants only; the baselines keep
+        their own retrieval, the oracle needs none and ETPNav explores."""
+        return self.spec.retrieval not in ("oracle", "etpnav", "remembr") and self.spec.retrieval not in BASELINES
+
+    def plausible(self, st: EpisodeState, g: int) -> bool:
+        """False when the current candidate's retrieved instance can be ruled out before driving there: some
+        object the memory recorded within SAME_INSTANCE_M of its estimated position, and none of those
+        passes the check on its record (`eval.precheck`; True when there is nothing to judge by)."""
+        est = self.estimate(st, g)
+        if not self.cfg.eval.precheck or est is None or st.subgoals is None or not self._reflects():
+            return True
+        objs = self.scenes[st.ep.scene].objects
+        rec = [o for o in self.known[st.b] if box_distance(objs[o], est) <= SAME_INSTANCE_M]
+        if not rec:
+            return True
+        ok = confirm(self.facts[st.ep.scene], st.subgoals[g], rec, self.cfg.episodes.location_radius,
+                     known=self.known[st.b])
+        return any((g, o) not in st.skip for o in ok)
+
     def fall_back(self, st: EpisodeState, g: int) -> bool:
         """RAGNav's reflection once the retrieved candidates are spent: the objects the memory recorded that
         pass the check on their records (head, attributes, relations, hint, sensors, superlatives ranked
@@ -616,8 +636,7 @@ class Loop:
         `eval.memory_fallback` new candidates, nearest first, each at the key pose that recorded it closest.
         Once per goal; ragnav variants only (the baselines keep their own retrieval). True if any was added."""
         k = self.cfg.eval.memory_fallback
-        if (k <= 0 or g in st.extra or st.subgoals is None or self.spec.retrieval in ("oracle", "etpnav", "remembr")
-                or self.spec.retrieval in BASELINES):
+        if k <= 0 or g in st.extra or st.subgoals is None or not self._reflects():
             return False
         st.extra[g] = 0
         objs = self.scenes[st.ep.scene].objects
@@ -670,6 +689,9 @@ class Loop:
             if node is None:
                 st.status[g] = "failed:no_candidate"
                 st.remaining.remove(g)
+                continue
+            if not self.plausible(st, g):  # reflection before driving: the record already fails the check
+                self.reject(st, g, "not_confirmed")
                 continue
             if self.spec.straight:
                 pts = self.pos[st.b][[node]]
