@@ -435,6 +435,7 @@ class EvalConfig:
     strict_lam: float = 1.0e4  # planning lambda for strict episodes (metres per order inversion)
     batch_size: int = 512  # episodes executed together in one vmapped call
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
+    record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's reflection: skip a candidate whose recorded instance fails the check
     memory_fallback: int = 2  # RAGNav's reflection: candidates exhausted -> up to this many recorded objects that
     # pass the check on the memory's records (0: off)

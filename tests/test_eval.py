@@ -227,3 +227,24 @@ def test_precheck_skips_a_candidate_whose_record_fails_the_check(setup, apartmen
     assert loop.plausible(state((-50.0, -50.0)), 0)  # nothing on record there: nothing to judge by
     off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, precheck=False))
     assert Loop(method_spec("ragnav"), bank, [apartment], off, ex, streams).plausible(state(other.position[:2]), 0)
+
+
+def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):
+    from ragnav_jax.evaluation.plot import draw_episode
+
+    cfg, bank, streams, emb, ex = setup
+    rec = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, record_legs=True))
+    episodes = load_episodes(EPISODES, [apartment])[:2]
+    rows, _ = evaluate_navigation(bank, [apartment], episodes, emb, rec, "ragnav", executor=ex)
+    for r in rows:
+        assert r["legs"] and all(len(leg["waypoints"]) >= 1 and leg["steps"] >= 0 for leg in r["legs"])
+        assert r["goal_ids"] == list(next(e for e in episodes if e.id == r["episode"]).goals)
+        ends = np.asarray([leg["end"] for leg in r["legs"]])
+        for d in r["declarations"]:  # a declaration is made where an approach leg's simulation ended
+            assert np.min(np.linalg.norm(ends - np.asarray(d["xy"]), axis=1)) < 2e-3
+        ax = draw_episode(apartment, r)
+        assert len(ax.lines) >= len(r["legs"])
+    plain, _ = evaluate_navigation(bank, [apartment], episodes, emb, cfg, "ragnav", executor=ex)
+    assert all("legs" not in r for r in plain)
+    with pytest.raises(ValueError, match="record_legs"):
+        draw_episode(apartment, plain[0])

@@ -398,6 +398,7 @@ class EpisodeState:
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
     extra: dict = dataclasses.field(default_factory=dict)  # per goal: candidates added by the memory fallback
+    legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
 
 
 _GRIDS: dict = {}  # (bank scene names, scenes' hash, clearance) -> {b: (origin, free)}
@@ -972,6 +973,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
         pts = np.zeros((B, P, 2), np.float32)
         n = np.zeros(B, np.int32)
         allow = np.zeros(B, np.int32)
+        ways = {}
         for i, leg in enumerate(legs):
             if leg is not None:
                 if leg[0] == "approach":  # from where the robot stands, round whatever is in the way
@@ -979,6 +981,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
                 else:
                     way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
                 pts[i], n[i] = pad_points(way, P)
+                ways[i] = way
                 st = chunk[i]
                 allow[i] = max(min(cfg.eval.leg_max_steps, cfg.eval.max_steps - st.steps - st.look_steps), 0)
         res = ex.run(sidx, d, jnp.asarray(pts), jnp.asarray(n), jnp.asarray(allow))
@@ -994,4 +997,8 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
             st.steps += int(steps[i])
             st.length += float(length[i])
             st.penetration = max(st.penetration, float(pen[i]))
+            if cfg.eval.record_legs:
+                st.legs.append({"kind": leg[0], "goal": int(leg[1]), "steps": int(steps[i]), "arrived": bool(arrived[i]),
+                                "waypoints": np.round(np.asarray(ways[i], np.float64)[: n[i]], 3).tolist(),
+                                "end": [round(float(x), 3) for x in poses[i][:2]]})
             loop.after_leg(st, leg, poses[i], bool(arrived[i]), vis[i])

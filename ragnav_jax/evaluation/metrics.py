@@ -106,7 +106,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
         (fails[0] if fails else ("order" if not in_order else st.reason or "incomplete")))
     return {
         "episode": ep.id, "scene": ep.scene, "modality": ep.modality, "order": ep.order, "method": method,
-        "goals": G, "success": bool(success), "progress": round(progress, 4),
+        "goals": G, "goal_ids": list(ep.goals), "success": bool(success), "progress": round(progress, 4),
         "spl": round(float(success) * ratio, 4), "ppl": round(progress * ratio, 4),
         "travel_distance_m": round(L, 3), "oracle_m": round(Ls, 3),
         "planned_rule1_m": None if math.isnan(r1) else round(r1, 3),
@@ -116,6 +116,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
         "wrong_declarations": sum(not d["correct"] for d in st.declarations),
         "rejected_candidates": int(sum(st.rejected)), "max_penetration_m": round(st.penetration, 4),
         "reason": reason,
+        **({"legs": st.legs} if st.legs else {}),
     }
 
 
