@@ -61,6 +61,10 @@ def main(argv: list[str] | None = None) -> int:
     try:
         _split_overrides(args)
         cfg = load_config(args.config, args.overrides)
+        if os.environ.get("RAGNAV_DISTRIBUTED"):  # several hosts: one process per host (evaluation/sharding.py)
+            from ragnav_jax.evaluation.sharding import init_distributed
+
+            init_distributed()
         return int(args.func(args, cfg) or 0)
     except UserError as e:
         print(f"ragnav: error: {e}", file=sys.stderr)

@@ -5,6 +5,7 @@ import json
 import jax
 import numpy as np
 import pandas as pd
+import pytest
 import sweep_fixtures
 from sweep_fixtures import SMALL, ragnav_subprocess
 
@@ -36,3 +37,20 @@ def test_sweep_on_four_devices_equals_one_device(tiny_run, tmp_path):
     assert json.loads((tmp_path / "four" / "summary.json").read_text())["devices"] == 4
     assert json.loads((tmp_path / "one" / "summary.json").read_text())["devices"] == 1
     pd.testing.assert_frame_equal(pd.read_csv(tmp_path / "one" / "sweep.csv"), pd.read_csv(tmp_path / "four" / "sweep.csv"))
+
+
+def test_init_distributed_reads_its_variables(monkeypatch):
+    import jax
+
+    from ragnav_jax.errors import UserError
+    from ragnav_jax.evaluation.sharding import init_distributed
+
+    calls = []
+    monkeypatch.setattr(jax.distributed, "initialize", lambda **kw: calls.append(kw))
+    assert not init_distributed({}) and not init_distributed({"RAGNAV_DISTRIBUTED": "0"}) and calls == []
+    assert init_distributed({"RAGNAV_DISTRIBUTED": "1", "RAGNAV_COORDINATOR": "h0:1234", "RAGNAV_NUM_PROCESSES": "2",
+                             "RAGNAV_PROCESS_ID": "1"})
+    assert calls == [{"coordinator_address": "h0:1234", "num_processes": 2, "process_id": 1}]
+    assert init_distributed({"RAGNAV_DISTRIBUTED": "1"}) and calls[-1] == {}  # cluster auto-detection
+    with pytest.raises(UserError, match="RAGNAV_PROCESS_ID"):
+        init_distributed({"RAGNAV_DISTRIBUTED": "1", "RAGNAV_PROCESS_ID": "one"})

@@ -13,6 +13,7 @@ kernels that scatter (MJX's collision code fails under Explicit).
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 import jax
@@ -63,3 +64,28 @@ def to_host(x: jax.Array) -> np.ndarray:
 
         return np.asarray(multihost_utils.process_allgather(x, tiled=True))
     return np.asarray(x)
+
+
+def init_distributed(env: dict | None = None) -> bool:
+    """jax.distributed.initialize() when RAGNAV_DISTRIBUTED=1 (called by the CLI before any JAX work).
+
+    RAGNAV_COORDINATOR (host:port of process 0), RAGNAV_NUM_PROCESSES and RAGNAV_PROCESS_ID are passed
+    when set; left unset, JAX detects them on clusters it knows (SLURM, Open MPI, ...). Returns whether
+    it initialised. Bad values are user errors naming the variable."""
+    from ragnav_jax.errors import UserError
+
+    env = dict(os.environ if env is None else env)
+    if env.get("RAGNAV_DISTRIBUTED", "0") in ("", "0", "false", "no"):
+        return False
+    kw = {}
+    if env.get("RAGNAV_COORDINATOR"):
+        kw["coordinator_address"] = env["RAGNAV_COORDINATOR"]
+    for var, key in (("RAGNAV_NUM_PROCESSES", "num_processes"), ("RAGNAV_PROCESS_ID", "process_id")):
+        if env.get(var):
+            try:
+                kw[key] = int(env[var])
+            except ValueError:
+                raise UserError(f"{var}={env[var]!r}: expected an integer") from None
+    jax.distributed.initialize(**kw)
+    return True
+
