@@ -60,7 +60,7 @@ QUICK = Profile(
     retrieval_sizes=(80, 1000, 10000), retrieval_queries=(64, 64, 32),
     path_graphs=200, path_nx_sample=5,
     plan_episodes=1000, plan_python_bf=2, plan_python_hk=1,
-    sim_batches=(1, 16, 64), sim_steps=4, sim_c_steps=50,
+    sim_batches=(1, 64), sim_steps=4, sim_c_steps=50,  # two compiles: keeps --quick under 2 minutes
     e2e_scenes=(1,), e2e_spacings=(0.8, 0.5), e2e_spacing_scenes=1, e2e_plan_episodes=2,
     e2e_explore_steps=400, e2e_execute_episodes=1,
     sweep_points=36, sweep_scenes=1,
@@ -70,7 +70,7 @@ QUICK = Profile(
 # than the suite's 10-minute budget on 2 cores); explore runs a shortened budget so 1 + 4 + 14 scenes fit.
 FULL = Profile(
     name="full", path_nx_sample=20, path_repeats=3, retrieval_queries=(256, 256, 64, 16), sim_batches=(1, 32, 1024),
-    e2e_scenes=(1, 4, 14), e2e_spacing_scenes=1, e2e_explore_steps=1500, e2e_execute_episodes=4,
+    e2e_scenes=(1, 4, 14, 64), e2e_spacing_scenes=1, e2e_explore_steps=1500, e2e_execute_episodes=4,
     sweep_points=100, sweep_scenes=4,
 )
 
