@@ -117,8 +117,10 @@ def test_profile_overrides_parse_and_reject():
     assert p.retrieval_sizes == GPU.retrieval_sizes and p.name == "gpu+set"
     with pytest.raises(UserError, match="FIELD one of"):
         override_profile(GPU, ["no_such_field=1"])
-    with pytest.raises(UserError, match="not a valid int"):
+    with pytest.raises(UserError, match="--set sweep_points.*expected an integer"):
         override_profile(GPU, ["sweep_points=many"])
+    with pytest.raises(UserError, match=r"--set sim_batches\[1\].*expected an integer"):
+        override_profile(GPU, ["sim_batches=1,x"])
 
 
 def test_retrieval_blocks_are_capped_by_cells_and_a_failing_size_keeps_the_others(monkeypatch):

@@ -59,32 +59,29 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
 
 
 def override_profile(profile, items: list[str]):
-    """The profile with FIELD=VALUE overrides applied; values parse by the field's type (tuples comma-separated)."""
+    """The profile with FIELD=VALUE overrides applied, values read as YAML and checked against the field's
+    annotation by the config's own coercion (tuples may be written bare: sim_batches=1,64; none: None)."""
     import dataclasses
+    import typing
 
+    import yaml
+
+    from ragnav_jax.config import _coerce
     from ragnav_jax.errors import UserError
 
-    fields = {f.name: f for f in dataclasses.fields(profile)}
+    hints = typing.get_type_hints(type(profile))
     changes = {}
     for item in items:
         key, sep, raw = item.partition("=")
-        if not sep or key not in fields or key == "name":
-            known = ", ".join(k for k in fields if k != "name")
+        if not sep or key not in hints or key == "name":
+            known = ", ".join(f.name for f in dataclasses.fields(profile) if f.name != "name")
             raise UserError(f"--set {item!r}: expected FIELD=VALUE with FIELD one of {known}")
-        cur = getattr(profile, key)
+        text = "null" if raw.strip().lower() == "none" else raw
+        if typing.get_origin(hints[key]) is tuple and not text.lstrip().startswith("["):
+            text = f"[{text}]"
         try:
-            if raw.lower() == "none":
-                val = None
-            elif isinstance(cur, tuple):
-                kind = type(cur[0]) if cur else int
-                val = tuple(kind(x) for x in raw.split(",") if x.strip())
-            elif isinstance(cur, str):
-                val = raw
-            elif isinstance(cur, float):
-                val = float(raw)
-            else:  # int, or None on an int | None field
-                val = int(raw)
-        except ValueError:
-            raise UserError(f"--set {key}={raw!r}: not a valid {type(cur).__name__}") from None
-        changes[key] = val
+            value = yaml.safe_load(text)
+        except yaml.YAMLError:
+            raise UserError(f"--set {key}={raw!r}: cannot read the value") from None
+        changes[key] = _coerce(value, hints[key], f"--set {key}")
     return profile.replace(name=profile.name + "+set", **changes)

@@ -401,10 +401,6 @@ class EpisodeState:
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
 
 
-_GRIDS: dict = {}  # (bank scene names, scenes' hash, clearance) -> {b: (origin, free)}
-_LOCAL_PLANS: dict = {}
-
-
 class Loop:
     """Host state machine of the episode loop; each phase hands one leg per episode to the executor."""
 
@@ -422,20 +418,21 @@ class Loop:
         self._seen: dict = {}
         self.look_cost = int(math.ceil(2 * math.pi / cfg.sim.max_yaw_rate / executor.control_dt))
         self.obstacles: dict = {}
-        # Occupancy grids and local plans depend on the scene alone: shared by every method's loop.
-        key = (tuple(bank.names), hash(tuple(self.scenes.get(n) for n in bank.names)), self._need())
-        self._grids = _GRIDS.setdefault(key, {})
-        self._local_cache = _LOCAL_PLANS.setdefault(key, {})
+        # Occupancy grids and local plans depend on the scene alone: kept on the executor, so every method
+        # evaluated with it shares them (keyed by bank index, hence the bank's scene order).
+        key = (tuple(bank.names), self._need())
+        self._grids = executor.cache.setdefault(("grids", *key), {})
+        self._local_cache = executor.cache.setdefault(("local_plans", *key), {})
         self.drive_pred = self._drive_paths(bank)
         # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
         obs = np.asarray(bank.memory.obs_object)
-        self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
         self.seen_at = []  # per scene: object -> key poses that recorded it
         for b in range(obs.shape[0]):
             d: dict = {}
-            for n, o in zip(*np.nonzero((obs[b] >= 0) & self.mask[b][:, None])):
-                d.setdefault(int(obs[b][n, o]), []).append(int(n))
+            for n, j in zip(*np.nonzero((obs[b] >= 0) & self.mask[b][:, None])):
+                d.setdefault(int(obs[b][n, j]), []).append(int(n))
             self.seen_at.append(d)
+        self.known = [sorted(d) for d in self.seen_at]
 
     # -- helpers
     def _drive_paths(self, bank: MemoryBank) -> np.ndarray:
@@ -644,8 +641,7 @@ class Loop:
         tried = [e for e in st.ests[g][: st.cptr[g]] if e is not None]
         recs = confirm(self.facts[st.ep.scene], st.subgoals[g], self.known[st.b], self.cfg.episodes.location_radius,
                        known=self.known[st.b])
-        recs = [o for o in recs if (g, o) not in st.skip and o in self.seen_at[st.b]
-                and all(box_distance(objs[o], e) > SAME_INSTANCE_M for e in tried)]
+        recs = [o for o in recs if (g, o) not in st.skip and all(box_distance(objs[o], e) > SAME_INSTANCE_M for e in tried)]
         if not recs:
             return False
         cost = self.order_cost(st.b)[st.node]

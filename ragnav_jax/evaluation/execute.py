@@ -65,6 +65,7 @@ class Executor:
     look: object  # jitted (scene_idx (E,), d) -> (visible (E, O) bool, distance (E, O) float32)
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
     traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
+    cache: dict  # host work that depends on these scenes alone (occupancy grids, local plans), shared by methods
 
 
 def make_executor(scenes: Sequence[Scene], cfg: Config) -> Executor:
@@ -163,7 +164,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, look, init, traces)
+                    run, look, init, traces, {})
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:
