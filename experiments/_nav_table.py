@@ -18,6 +18,8 @@ def parser(doc: str, default_out: str) -> argparse.ArgumentParser:
     p.add_argument("--out", default=default_out, help="output run folder (eval results, table, plot)")
     p.add_argument("--stride", type=int, default=1, help="every N-th episode only (an even subsample)")
     p.add_argument("--reuse", action="store_true", help="reuse OUT/eval/<method>/summary.json where present")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="config override passed to `ragnav eval` (repeatable), e.g. eval.retries=0")
     return p
 
 
@@ -28,10 +30,16 @@ def run_methods(args, methods: list[str]) -> dict[str, dict]:
     todo = [m for m in methods if not (args.reuse and (out / "eval" / m.replace(":", "_") / "summary.json").is_file())]
     if todo:  # one call: the executor is compiled once for every method
         rc = cli_main(["eval", "--config", args.config, "--scenes", args.run, "--episodes", episodes,
-                       "--method", ",".join(todo), "--stride", str(args.stride), "--out", str(out), "--quiet"])
+                       "--method", ",".join(todo), "--stride", str(args.stride), "--out", str(out), "--quiet",
+                       *args.set])
         if rc:
             raise SystemExit(f"ragnav eval --method {','.join(todo)} failed (exit {rc})")
     return {m: json.loads((out / "eval" / m.replace(":", "_") / "summary.json").read_text()) for m in methods}
+
+
+def episode_rows(args, method: str) -> list[dict]:
+    path = Path(args.out) / "eval" / method.replace(":", "_") / "episodes.jsonl"
+    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
 
 
 def fmt(x, nd=2) -> str:

@@ -74,8 +74,9 @@ def queries(q: int, d: int, rng) -> QueryArrays:
     def u(*s):
         return jnp.asarray(unit(rng.normal(size=(*s, d))).astype(np.float32))
 
+    has_anchor = jnp.asarray(rng.uniform(size=q) < 0.3)
     return QueryArrays(
-        target=u(q), head=u(q), anchor=u(q), has_anchor=jnp.asarray(rng.uniform(size=q) < 0.3), room=u(q),
+        target=u(q), head=u(q), anchor=u(q), has_anchor=has_anchor, anchor_near=has_anchor, room=u(q),
         has_room=jnp.asarray(rng.uniform(size=q) < 0.3), hint=jnp.asarray(rng.uniform(0, 10, (q, 2)).astype(np.float32)),
         has_hint=jnp.asarray(rng.uniform(size=q) < 0.3), sensor_channel=jnp.zeros(q, jnp.int32),
         sensor_op=jnp.asarray(rng.integers(0, 6, q).astype(np.int32)), sensor_value=jnp.full(q, 20.0, jnp.float32),

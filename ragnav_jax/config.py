@@ -324,16 +324,21 @@ class RetrievalConfig:
     w_slot: float = 0.7  # instance phrase vs node fingerprint
     match_threshold: float = 0.45  # head-noun similarity for an instance to count as the category (superlatives)
     sigma_loc: float = 1.5  # metres, location hint Gaussian width
+    sigma_rel: float = 3.0  # metres, instance-level "A near B" Gaussian width (ours; retrieval/score.py)
     w_loc: float = 1.0
     w_sensor: float = 1.0
     w_room: float = 1.0  # soft room term from the forest's summary labels (0: off)
     tau_room: float = 0.05
+    forest_lock: float = 0.0  # 1: a room phrase also prunes the leaves outside the beam's region (the paper's hard
+    # hierarchical pruning); 0: the forest's labels rank regions through the soft room term only (ours; see README)
 
     def __post_init__(self):
-        _check(self.sigma > 0 and self.sigma_loc > 0, "retrieval.sigma", "sigma and sigma_loc must be > 0")
+        _check(self.sigma > 0 and self.sigma_loc > 0 and self.sigma_rel > 0, "retrieval.sigma",
+               "sigma, sigma_loc and sigma_rel must be > 0")
         _check(1 <= self.top_k <= 16, "retrieval.top_k", "must be in [1, 16]")
         _check(0 <= self.hops <= 3 and 0 <= self.boost_hops <= 1, "retrieval.hops", "hops in [0, 3], boost_hops in [0, 1]")
         _check(1 <= self.beam <= 32, "retrieval.beam", "must be in [1, 32]")
+        _check(self.forest_lock in (0.0, 1.0), "retrieval.forest_lock", "must be 0 or 1")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -436,13 +441,11 @@ class EvalConfig:
     batch_size: int = 512  # episodes executed together in one vmapped call
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
-    precheck: bool = True  # RAGNav's reflection: skip a candidate whose recorded instance fails the check
-    memory_fallback: int = 2  # RAGNav's reflection: candidates exhausted -> up to this many recorded objects that
-    # pass the check on the memory's records (0: off)
+    widen: bool = True  # RAGNav's candidates: after those the hard constraints kept (forest lock, anchor validation),
+    # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
-        _check(self.memory_fallback >= 0, "eval.memory_fallback", "must be >= 0")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",

@@ -5,6 +5,8 @@ import dataclasses
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st_
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
@@ -176,57 +178,57 @@ def test_confirm_checks_the_room_type_inferred_from_the_records(apartment):
         assert len(confirm(facts, sg, everything, 1.0)) > len(got)  # without records rooms are not checked
 
 
-def test_memory_fallback_adds_recorded_objects_once_candidates_are_spent(setup, apartment):
+def test_candidate_order_tiers():
+    from ragnav_jax.evaluation.episode import candidate_order
+    from ragnav_jax.retrieval.kernels import NEG
+
+    score = np.array([0.9, NEG, 0.5, NEG, 0.2, NEG], np.float32)  # node 5: no observation at all
+    relaxed = np.array([0.9, 0.8, 0.5, 0.7, 0.2, NEG], np.float32)
+    category = np.array([False, True, True, False, False, True])
+    live = np.ones(6, bool)
+    assert candidate_order(score, relaxed, category, live, False).tolist() == [0, 2, 4]  # top-k of what was kept
+    # top-1 first (the retrieval's answer), then kept category matches, dropped ones, other kept, the rest
+    assert candidate_order(score, relaxed, category, live, True).tolist() == [0, 2, 1, 4, 3]
+    live[1] = False
+    assert candidate_order(score, relaxed, category, live, True).tolist() == [0, 2, 4, 3]
+
+
+@settings(max_examples=50, deadline=None)
+@given(st_.lists(st_.tuples(st_.floats(-1, 3), st_.floats(-1, 3), st_.booleans(), st_.booleans(), st_.booleans()),
+                 min_size=1, max_size=12))
+def test_candidate_order_properties(nodes):
+    from ragnav_jax.evaluation.episode import candidate_order
+    from ragnav_jax.retrieval.kernels import NEG
+
+    kept_flag = np.array([n[2] for n in nodes])
+    score = np.where(kept_flag, [n[0] for n in nodes], NEG).astype(np.float32)
+    relaxed = np.array([n[1] for n in nodes], np.float32)
+    category, live = np.array([n[3] for n in nodes]), np.array([n[4] for n in nodes])
+    plain = candidate_order(score, relaxed, category, live, False)
+    wide = candidate_order(score, relaxed, category, live, True)
+    assert len(set(wide.tolist())) == len(wide) and set(plain.tolist()) <= set(wide.tolist())
+    assert all(live[wide])
+    if len(plain):
+        assert wide[0] == plain[0]  # the retrieval's top-1 is always tried first
+    assert not len(plain) or set(wide.tolist()) == set(np.flatnonzero(live).tolist())
+
+
+def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartment):
+    """Rejected candidates hand over to the method's own next candidate; once they are spent the goal is a
+    recorded failure (no lookup outside the ranking: that would mask the retrieval being evaluated)."""
     from ragnav_jax.evaluation.episode import EpisodeState, Loop, method_spec
 
     cfg, bank, streams, emb, ex = setup
     ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
     sg = parse_instruction(ep.instruction).subgoals
-
-    def state():  # one candidate, at a key pose far from the fridge, already on its last retry
-        far = int(np.argmax(np.linalg.norm(np.asarray(bank.memory.position)[0, :, :2]
-                                           - np.asarray(apartment.objects[[o.id for o in apartment.objects].index("fridge_1")].position[:2]), axis=1)
-                            * np.asarray(bank.memory.node_mask)[0]))
-        return EpisodeState(0, ep, 0, 0, sg, [[far]], [[None]], [0], [0], [0], 0, ["pending"])
-
-    for k, expect in ((2, True), (0, False)):
-        c = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, memory_fallback=k, retries=0))
-        loop = Loop(method_spec("ragnav"), bank, [apartment], c, ex, streams)
-        st = state()
-        loop.reject(st, 0, "not_confirmed")
-        if not expect:
-            assert st.status == ["failed:not_confirmed"] and st.remaining == []
-            continue
-        node = loop.current(st, 0)
-        assert st.status == ["pending"] and node is not None and len(st.cands[0]) == 2
-        fridge = apartment.objects[[o.id for o in apartment.objects].index("fridge_1")]
-        assert np.allclose(st.ests[0][1], fridge.position[:2])
-        loop.reject(st, 0, "not_confirmed")  # the fallback is spent: a second rejection gives the goal up
-        assert st.status == ["failed:not_confirmed"]
-    loop = Loop(method_spec("naive_rag"), bank, [apartment], cfg, ex, streams)  # baselines keep their retrieval
-    assert not loop.fall_back(state(), 0)
-
-
-def test_precheck_skips_a_candidate_whose_record_fails_the_check(setup, apartment):
-    from ragnav_jax.evaluation.episode import EpisodeState, Loop, method_spec
-
-    cfg, bank, streams, emb, ex = setup
-    objs = apartment.objects
-    ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
-    sg = parse_instruction(ep.instruction).subgoals
-    fridge = next(o for o in objs if o.id == "fridge_1")
-    other = next(o for o in objs if o.category != "fridge")
-    loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
-    assert loop.known[0] and objs.index(fridge) in loop.known[0] and objs.index(other) in loop.known[0]
-
-    def state(est):
-        return EpisodeState(0, ep, 0, 0, sg, [[0]], [[np.asarray(est, np.float32)]], [0], [0], [0], 0, ["pending"])
-
-    assert loop.plausible(state(fridge.position[:2]), 0)  # the record there is a fridge
-    assert not loop.plausible(state(other.position[:2]), 0)  # a recorded non-fridge: ruled out before driving
-    assert loop.plausible(state((-50.0, -50.0)), 0)  # nothing on record there: nothing to judge by
-    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, precheck=False))
-    assert Loop(method_spec("ragnav"), bank, [apartment], off, ex, streams).plausible(state(other.position[:2]), 0)
+    c = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, retries=1))
+    loop = Loop(method_spec("ragnav"), bank, [apartment], c, ex, streams)
+    st = EpisodeState(0, ep, 0, 0, sg, [[3, 5, 7]], [[None] * 3], [0], [0], [0], 0, ["pending"])
+    assert loop.current(st, 0) == 3
+    loop.reject(st, 0, "not_confirmed")
+    assert loop.current(st, 0) == 5 and st.status == ["pending"]
+    loop.reject(st, 0, "not_confirmed")  # retries spent although a third candidate is ranked
+    assert st.status == ["failed:not_confirmed"] and st.remaining == []
 
 
 def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):
@@ -248,3 +250,28 @@ def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_p
     assert all("legs" not in r for r in plain)
     with pytest.raises(ValueError, match="record_legs"):
         draw_episode(apartment, plain[0])
+
+
+@settings(max_examples=40, deadline=None)
+@given(st_.integers(0, 40), st_.integers(0, 40))
+def test_sign_test_matches_scipy(wins, losses):
+    from scipy.stats import binomtest
+
+    from ragnav_jax.evaluation.metrics import sign_test_p
+
+    ref = 1.0 if wins + losses == 0 else binomtest(wins, wins + losses, 0.5).pvalue
+    assert sign_test_p(wins, losses) == pytest.approx(ref, rel=1e-9, abs=1e-12)
+
+
+def test_paired_comparison_counts_episodes_and_goals():
+    from ragnav_jax.evaluation.metrics import paired_comparison
+
+    def row(e, ok, top1):
+        return {"episode": e, "success": ok, "retrieval_top1": top1}
+
+    full = [row("a", True, [True, True]), row("b", True, [True]), row("c", False, [False]), row("d", True, [None])]
+    abl = [row("b", False, [False]), row("a", True, [True, False]), row("c", True, [True]), row("x", False, [])]
+    c = paired_comparison(full, abl)
+    assert (c["episodes"], c["success_wins"], c["success_losses"]) == (3, 1, 1)
+    assert (c["goals"], c["top1_wins"], c["top1_losses"]) == (4, 2, 1)
+    assert c["success_p"] == 1.0

@@ -67,11 +67,12 @@ def make_index():
     )
 
 
-def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0, room=None):
+def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0, room=None, near=True):
     z = np.zeros(D, np.float32)
     return QueryArrays(
         target=jnp.asarray(target), head=jnp.asarray(head if head is not None else target),
         anchor=jnp.asarray(anchor if anchor is not None else z), has_anchor=jnp.asarray(anchor is not None),
+        anchor_near=jnp.asarray(anchor is not None and near),
         room=jnp.asarray(room if room is not None else z), has_room=jnp.asarray(room is not None),
         hint=jnp.asarray(hint if hint is not None else [0.0, 0.0], jnp.float32), has_hint=jnp.asarray(hint is not None),
         sensor_channel=jnp.int32(0), sensor_op=jnp.int32(op), sensor_value=jnp.float32(value),
@@ -151,8 +152,8 @@ def test_sigma_grid_without_recompiling():
     assert len(traces) == 1 and f._cache_size() == 1
 
 
-def test_room_term_prefers_the_matching_region():
-    # Two forest clusters: nodes 0-2 labelled like the query room, nodes 3-5 not.
+def two_regions():
+    """IDX with two forest clusters: nodes 0-2 labelled room_a, nodes 3-5 room_b."""
     room_a, room_b = unit(RED + BLUE), unit(TV + LAMP)
     idx = IDX.replace(
         cluster_emb=jnp.stack([jnp.asarray(room_a), jnp.asarray(room_b)])[None],
@@ -160,6 +161,11 @@ def test_room_term_prefers_the_matching_region():
         cluster_mask=jnp.ones((1, 2), bool), cluster_parent=-jnp.ones((1, 2), jnp.int32),
         leaf_cluster=jnp.array([[0], [0], [0], [1], [1], [1]], jnp.int32),
     )
+    return idx, room_a, room_b
+
+
+def test_room_term_prefers_the_matching_region():
+    idx, room_a, room_b = two_regions()
     s, expl = score(idx, query(unit(PLANT), room=room_b), P)
     assert int(jnp.argmax(s)) == 5 and float(expl["room"][5]) == 1.0 and float(expl["room"][1]) < 0.01
     s, _ = score(idx, query(unit(PLANT), room=room_a), P)
@@ -167,6 +173,52 @@ def test_room_term_prefers_the_matching_region():
     # The labels belong to the forest: without it the room phrase cannot be used (a tie on semantics).
     _, expl = score(idx, query(unit(PLANT), room=room_a), ablation_params(P, "no_forest"))
     assert bool(jnp.all(expl["room"] == 1.0))
+
+
+def test_room_phrase_does_not_hide_a_target_whose_region_is_labelled_otherwise():
+    # The only TV (node 3) lies in the region labelled like room_b; the query names room_a (the summariser
+    # labelled the TV's room differently, or the phrase is redundant). The room term is relative to the
+    # regions that hold the target's category, and the forest does not lock a region without one.
+    idx, room_a, room_b = two_regions()
+    s, expl = score(idx, query(unit(TV), room=room_a), P)
+    assert int(jnp.argmax(s)) == 3 and float(expl["room"][3]) == 1.0 and bool(expl["category"][3])
+    locked = P.replace(forest_lock=jnp.float32(1.0), beam=jnp.int32(1))  # the paper's hard pruning, one region
+    s, _ = score(idx, query(unit(TV), room=room_a), locked)
+    assert int(jnp.argmax(s)) == 3 and bool(jnp.all(s > NEG / 2))  # region a holds no TV: no lock
+    s, _ = score(idx, query(unit(PLANT), room=room_a), locked)
+    assert float(s[5]) <= NEG / 2 and int(jnp.argmax(s)) == 1  # it holds a plant: region b is pruned
+    # Two plants, one per region: the room phrase still picks between them.
+    s, _ = score(idx, query(unit(PLANT), room=room_a), P)
+    assert int(jnp.argmax(s)) == 1 and float(s[5]) < 0.01 * float(s[1])
+
+
+def test_anchor_proximity_prefers_the_instance_next_to_the_anchor():
+    from ragnav_jax.retrieval.score import anchor_proximity
+
+    # "the radiator near the lamp": radiator 4 is 1.4 m from the lamp, radiator 9 six metres away.
+    anc = jnp.asarray([float(e[0] @ LAMP) for e, _, _ in INSTANCES])
+    p = P.replace(anchor_threshold=jnp.float32(0.8), sigma_rel=jnp.float32(3.0))
+    prox = anchor_proximity(IDX, query(unit(RADIATOR), anchor=unit(LAMP)), p, anc)
+    assert float(prox[4]) > 0.85 and float(prox[9]) < 0.2
+    ref = np.exp(-((3.3 - 1.9) ** 2 + 0.1**2) / (2 * 3.0**2))  # NumPy reference of the Gaussian
+    assert float(prox[4]) == pytest.approx(ref, rel=1e-5)
+    # Off for a room-scale relation, without spatial enhancement, and without an anchor phrase.
+    for q, pp in ((query(unit(RADIATOR), anchor=unit(LAMP), near=False), p),
+                  (query(unit(RADIATOR), anchor=unit(LAMP)), ablation_params(p, "no_spatial")),
+                  (query(unit(RADIATOR)), p)):
+        assert bool(jnp.all(anchor_proximity(IDX, q, pp, anc) == 1.0))
+
+
+def test_anchor_proximity_picks_between_two_instances_one_key_pose_sees():
+    # Node 2 sees both radiators (one 1.4 m from the lamp, one 6 m away), the second one better worded.
+    slot = np.asarray(IDX.slot_inst).copy()
+    slot[2] = [9, 4]
+    idx = IDX.replace(slot_inst=jnp.asarray(slot), slot_mask=jnp.asarray(slot >= 0))
+    q_plain = query(unit(RADIATOR + 0.2 * BLUE), RADIATOR)
+    _, expl = score(idx, q_plain, P)
+    assert int(expl["instance"][2]) == 0  # the blueish radiator 9 (slot 0) wins on words alone
+    _, expl = score(idx, query(unit(RADIATOR + 0.2 * BLUE), RADIATOR, anchor=unit(LAMP)), P)
+    assert int(expl["instance"][2]) == 1  # near the lamp: radiator 4 (slot 1)
 
 
 def test_pooled_phrases_recover_an_attribute_seen_once():

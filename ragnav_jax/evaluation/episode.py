@@ -47,8 +47,9 @@ from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
+from ragnav_jax.retrieval import kernels as K
 from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
-from ragnav_jax.retrieval.evaluate import goal_items, node_scores, prepare_batch
+from ragnav_jax.retrieval.evaluate import goal_items, prepare_batch
 from ragnav_jax.retrieval.index import node_slots
 from ragnav_jax.retrieval.params import ablation_params, params_from_config
 from ragnav_jax.retrieval.score import score_subgoal
@@ -201,16 +202,38 @@ class Candidates:
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
 
 
-@functools.partial(jax.jit, static_argnames="deep")
-def _top_candidates(index, queries, params, deep: int):
-    """(scores, nodes) (B, Q, deep): the best-scoring real nodes of every subgoal slot."""
-    return jax.lax.top_k(jnp.where(index.node_mask[:, None, :], node_scores(index, queries, params), -jnp.inf), deep)
-
-
 @jax.jit
-def _matched_instances(index, queries, params):
-    """(B, Q, N) int32: the observation slot of each node that matched each subgoal best."""
-    return jax.vmap(lambda ii, qs: jax.vmap(lambda qq: score_subgoal(ii, qq, params)[1]["instance"])(qs))(index, queries)
+def _ranked_terms(index, queries, params):
+    """What candidate_order ranks by, for every (scene, subgoal slot, node), each (B, Q, N): the final
+    score, the relaxed score, category match, and the node's best-matching observation slot (int32)."""
+
+    def one(idx, q):
+        s, ex = score_subgoal(idx, q, params)
+        return s, ex["relaxed"], ex["category"], ex["instance"]
+
+    return jax.vmap(lambda idx, qs: jax.vmap(lambda q: one(idx, q))(qs))(index, queries)
+
+
+def candidate_order(score: np.ndarray, relaxed: np.ndarray, category: np.ndarray, live: np.ndarray,
+                    widen: bool) -> np.ndarray:
+    """Node indices, best first, that the reflection may try for one subgoal; all inputs (N,).
+
+    Without `widen`: the nodes the retrieval kept (score > K.NEG / 2), by score, as top-k retrieval.
+    With it (RAGNav's reflection, ours): the retrieval's top-1 first (so the retrieval accuracy is the
+    kernel's), then four tiers, each by score: kept nodes whose instance is of the target's category;
+    the category matches the hard constraints (the forest's region lock, anchor validation) dropped, by
+    their relaxed score; the other kept nodes; the rest. A hard constraint that chose the wrong region
+    then costs a rejected candidate, not the goal.
+    """
+    kept = live & (score > K.NEG / 2)
+    idx = np.flatnonzero(kept)
+    idx = idx[np.argsort(-score[idx], kind="stable")]
+    if not widen or not len(idx):
+        return idx
+    rest = np.flatnonzero((kept | (live & (relaxed > K.NEG / 2))) & (np.arange(len(score)) != idx[0]))
+    tier = np.where(category, 0, 2) + np.where(kept, 0, 1)
+    key = np.where(kept, score, relaxed)
+    return np.concatenate([idx[:1], rest[np.lexsort((-key[rest], tier[rest]))]])
 
 
 _score_single = jax.jit(score_subgoal)
@@ -263,15 +286,13 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
         timing["embed_ms"] = bmeta.embed_ms
         if batch is not None:
-            # A deeper top list than k: candidates are then picked one per estimated instance (below).
-            deep = min(k * CANDIDATE_DEPTH, int(batch.index.node_mask.shape[-1]))
-            fn = functools.partial(_top_candidates, deep=deep)
-            jax.block_until_ready(fn(batch.index, batch.queries, p))
+            jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
             t0 = time.perf_counter()
-            top_s, top_n = jax.block_until_ready(fn(batch.index, batch.queries, p))
+            terms = jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
             live = sum(sl is not None for sl in bmeta.slots)
             timing["retrieval_ms_batched"] = 1e3 * (time.perf_counter() - t0) / max(live, 1)
-            top_s, top_n = np.asarray(top_s), np.asarray(top_n)
+            score, relaxed, category, slot_best = map(np.asarray, terms)  # each (B, Q, N)
+            node_live = np.asarray(batch.index.node_mask)  # (B, N)
             b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
             idx0 = jax.tree.map(lambda x: x[b0], batch.index)
             q0 = jax.tree.map(lambda x: x[b0, s0], batch.queries)
@@ -285,13 +306,13 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
             # Where each candidate node's best-matching instance is (the index associates detections into
             # instances with estimated positions): the reflection looks for the target there.
-            slot_best = np.asarray(_matched_instances(batch.index, batch.queries, p))  # (B, Q, N) slot index
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
             for (ep, kk, _goal, _sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
-                    ranked = [int(n) for n, s in zip(top_n[sl], top_s[sl]) if np.isfinite(s) and s > -1e8]
                     b_, q_ = sl
+                    ranked = candidate_order(score[sl], relaxed[sl], category[sl], node_live[b_], cfg.eval.widen)
+                    ranked = [int(n) for n in ranked[: k * CANDIDATE_DEPTH]]
                     inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
                     pick = distinct_instances(inst, k)
                     cand_of[(ep.id, kk)] = [ranked[j] for j in pick]
@@ -397,7 +418,6 @@ class EpisodeState:
     skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
-    extra: dict = dataclasses.field(default_factory=dict)  # per goal: candidates added by the memory fallback
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
 
 
@@ -424,15 +444,10 @@ class Loop:
         self._grids = executor.cache.setdefault(("grids", *key), {})
         self._local_cache = executor.cache.setdefault(("local_plans", *key), {})
         self.drive_pred = self._drive_paths(bank)
-        # Every object some key pose of the memory recorded: the reflection's scene-level evidence.
+        # Every object some key pose of the memory recorded: the on-arrival check's scene-level evidence
+        # (anchors of relations, the room's inferred type, rivals of a superlative).
         obs = np.asarray(bank.memory.obs_object)
-        self.seen_at = []  # per scene: object -> key poses that recorded it
-        for b in range(obs.shape[0]):
-            d: dict = {}
-            for n, j in zip(*np.nonzero((obs[b] >= 0) & self.mask[b][:, None])):
-                d.setdefault(int(obs[b][n, j]), []).append(int(n))
-            self.seen_at.append(d)
-        self.known = [sorted(d) for d in self.seen_at]
+        self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
 
     # -- helpers
     def _drive_paths(self, bank: MemoryBank) -> np.ndarray:
@@ -563,7 +578,7 @@ class Loop:
 
     def current(self, st: EpisodeState, g: int) -> int | None:
         c = st.cands[g]
-        if st.rejected[g] > self.cfg.eval.retries + st.extra.get(g, 0) or st.cptr[g] >= len(c):
+        if st.rejected[g] > self.cfg.eval.retries or st.cptr[g] >= len(c):
             return None
         return c[st.cptr[g]]
 
@@ -602,64 +617,10 @@ class Loop:
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
         st.cptr[g] += 1
         st.rejected[g] += 1
-        if self.current(st, g) is None and not self.fall_back(st, g):
+        if self.current(st, g) is None:
             st.status[g] = f"failed:{why}"
             st.remaining.remove(g)
         self.replan(st)
-
-    def _reflects(self) -> bool:
-        """RAGNav's reflection (pre-check and memory fallback): ragnav variants only; the baselines keep
-        their own retrieval, the oracle needs none and ETPNav explores."""
-        return self.spec.retrieval not in ("oracle", "etpnav", "remembr") and self.spec.retrieval not in BASELINES
-
-    def plausible(self, st: EpisodeState, g: int) -> bool:
-        """False when the current candidate's retrieved instance can be ruled out before driving there: some
-        object the memory recorded within SAME_INSTANCE_M of its estimated position, and none of those
-        passes the check on its record (`eval.precheck`; True when there is nothing to judge by)."""
-        est = self.estimate(st, g)
-        if not self.cfg.eval.precheck or est is None or st.subgoals is None or not self._reflects():
-            return True
-        objs = self.scenes[st.ep.scene].objects
-        rec = [o for o in self.known[st.b] if box_distance(objs[o], est) <= SAME_INSTANCE_M]
-        if not rec:
-            return True
-        ok = confirm(self.facts[st.ep.scene], st.subgoals[g], rec, self.cfg.episodes.location_radius,
-                     known=self.known[st.b])
-        return any((g, o) not in st.skip for o in ok)
-
-    def fall_back(self, st: EpisodeState, g: int) -> bool:
-        """RAGNav's reflection once the retrieved candidates are spent: the objects the memory recorded that
-        pass the check on their records (head, attributes, relations, hint, sensors, superlatives ranked
-        over the records) and lie away from every instance already tried become up to
-        `eval.memory_fallback` new candidates, nearest first, each at the key pose that recorded it closest.
-        Once per goal; ragnav variants only (the baselines keep their own retrieval). True if any was added."""
-        k = self.cfg.eval.memory_fallback
-        if k <= 0 or g in st.extra or st.subgoals is None or not self._reflects():
-            return False
-        st.extra[g] = 0
-        objs = self.scenes[st.ep.scene].objects
-        tried = [e for e in st.ests[g][: st.cptr[g]] if e is not None]
-        recs = confirm(self.facts[st.ep.scene], st.subgoals[g], self.known[st.b], self.cfg.episodes.location_radius,
-                       known=self.known[st.b])
-        recs = [o for o in recs if (g, o) not in st.skip and all(box_distance(objs[o], e) > SAME_INSTANCE_M for e in tried)]
-        if not recs:
-            return False
-        cost = self.order_cost(st.b)[st.node]
-        new = []
-        for o in recs:
-            xy = np.asarray(objs[o].position[:2], np.float32)
-            nodes = self.seen_at[st.b][o]
-            n = nodes[int(np.argmin(np.linalg.norm(self.pos[st.b][nodes] - xy[None], axis=1)))]
-            if np.isfinite(cost[n]):
-                new.append((float(cost[n]), n, xy))
-        new = sorted(new, key=lambda t: t[0])[:k]
-        if not new:
-            return False
-        c = st.cptr[g]
-        st.cands[g] = list(st.cands[g][:c]) + [n for _, n, _ in new]
-        st.ests[g] = list(st.ests[g][:c]) + [xy for _, _, xy in new]
-        st.extra[g] = max(0, st.rejected[g] - 1 + len(new) - self.cfg.eval.retries)  # exactly len(new) more tries
-        return self.current(st, g) is not None
 
     def goal_object(self, st: EpisodeState, g: int):
         sc = self.scenes[st.ep.scene]
@@ -686,9 +647,6 @@ class Loop:
             if node is None:
                 st.status[g] = "failed:no_candidate"
                 st.remaining.remove(g)
-                continue
-            if not self.plausible(st, g):  # reflection before driving: the record already fails the check
-                self.reject(st, g, "not_confirmed")
                 continue
             if self.spec.straight:
                 pts = self.pos[st.b][[node]]

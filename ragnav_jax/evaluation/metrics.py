@@ -158,3 +158,29 @@ def summarise(rows: list[dict], timing: dict, task_time_s: float, method: str) -
     out["by_modality"] = {m: _block(v) for m, v in sorted(by.items())}
     out["reasons"] = dict(Counter(r["reason"] for r in rows))
     return out
+
+
+def sign_test_p(wins: int, losses: int) -> float:
+    """Exact two-sided sign test: P(a split at least this uneven | no difference), ties dropped."""
+    n = wins + losses
+    if n == 0:
+        return 1.0
+    k = min(wins, losses)
+    tail = sum(math.comb(n, i) for i in range(k + 1)) / 2.0**n
+    return min(1.0, 2.0 * tail)
+
+
+def paired_comparison(base: list[dict], other: list[dict]) -> dict:
+    """Episode-paired comparison of two methods' rows (matched by episode id) on success and on top-1
+    retrieval per goal: where only `base` succeeds (wins), only `other` (losses), and the sign test's p."""
+    by = {r["episode"]: r for r in other}
+    common = [(r, by[r["episode"]]) for r in base if r["episode"] in by]
+    wins = sum(a["success"] and not b["success"] for a, b in common)
+    losses = sum(b["success"] and not a["success"] for a, b in common)
+    pairs = [(x, y) for a, b in common for x, y in zip(a["retrieval_top1"], b["retrieval_top1"])
+             if x is not None and y is not None]
+    r_wins = sum(x and not y for x, y in pairs)
+    r_losses = sum(y and not x for x, y in pairs)
+    return {"episodes": len(common), "success_wins": wins, "success_losses": losses,
+            "success_p": round(sign_test_p(wins, losses), 4), "goals": len(pairs), "top1_wins": r_wins,
+            "top1_losses": r_losses, "top1_p": round(sign_test_p(r_wins, r_losses), 4)}

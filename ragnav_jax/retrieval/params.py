@@ -24,10 +24,12 @@ class RetrievalParams:
     w_slot: jnp.ndarray  # weight of the per-object (instance) similarity vs the node fingerprint
     match_threshold: jnp.ndarray  # head-noun similarity above which an instance counts as the category
     sigma_loc: jnp.ndarray  # metres, width of the location-hint Gaussian
+    sigma_rel: jnp.ndarray  # metres, width of the instance-level "A near B" Gaussian (anchor_proximity)
     w_loc: jnp.ndarray  # exponent of the location term (0 ignores hints)
     w_sensor: jnp.ndarray  # exponent of the sensor term (0 ignores sensor constraints)
     w_room: jnp.ndarray  # 1: soft room constraint from the forest's summary labels; 0: off
     tau_room: jnp.ndarray  # softness of the room term (similarity units)
+    forest_lock: jnp.ndarray  # 1: a room phrase prunes leaves outside the beam's region (paper); 0: soft room term only
     use_forest: jnp.ndarray  # 1: hierarchical pruning; 0: flat scoring of all nodes ("w/o semantic forest")
     use_topology: jnp.ndarray  # 1: anchor validation and boosting over G_t; 0: neither ("w/o topological map")
     use_spatial: jnp.ndarray  # 1: anchor-guided spatial term ("w/o spatial enhancement" at 0)
@@ -48,7 +50,7 @@ class RetrievalParams:
 INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
 DEFAULTS = dict(
     sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=32, anchor_threshold=0.45, boost_threshold=0.45,
-    w_slot=0.7, match_threshold=0.45, sigma_loc=1.5, w_loc=1.0, w_sensor=1.0, w_room=1.0, tau_room=0.05,
+    w_slot=0.7, match_threshold=0.45, sigma_loc=1.5, sigma_rel=3.0, w_loc=1.0, w_sensor=1.0, w_room=1.0, tau_room=0.05, forest_lock=0.0,
     use_forest=1.0, use_topology=1.0, use_spatial=1.0, use_boost=1.0,
 )
 # Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).

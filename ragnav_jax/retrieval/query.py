@@ -28,6 +28,7 @@ class QueryArrays:
     head: jnp.ndarray  # (D,) embedding of the head noun alone (category match for superlatives)
     anchor: jnp.ndarray  # (D,) embedding of the first relation's anchor phrase (zeros when none)
     has_anchor: jnp.ndarray  # () bool
+    anchor_near: jnp.ndarray  # () bool: the relation is metric (near, next to, beside, by, on, with), not "in the room with"
     room: jnp.ndarray  # (D,) embedding of the room constraint (zeros when none)
     has_room: jnp.ndarray  # () bool
     hint: jnp.ndarray  # (2,) float32 location hint (x, y)
@@ -71,7 +72,8 @@ def encode_subgoals(subgoals: Sequence[Subgoal], embedder, sensor_names: Sequenc
                 break
         rows.append(
             dict(
-                target=emb(tgt), head=emb(head), anchor=emb(anc), has_anchor=bool(anc), room=emb(room),
+                target=emb(tgt), head=emb(head), anchor=emb(anc), has_anchor=bool(anc),
+                anchor_near=bool(anc) and sg.target.relations[0].type != "in_room_with", room=emb(room),
                 has_room=bool(room),
                 hint=np.array([sg.location.x, sg.location.y] if sg.location else [0.0, 0.0], np.float32),
                 has_hint=sg.location is not None, sensor_channel=np.int32(ch), sensor_op=np.int32(op),
