@@ -441,6 +441,8 @@ class EvalConfig:
     batch_size: int = 512  # episodes executed together in one vmapped call
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
+    precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)
+    # or whose estimated position lies beyond a coordinate hint's radius, before driving (see README)
     widen: bool = True  # RAGNav's candidates: after those the hard constraints kept (forest lock, anchor validation),
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
 

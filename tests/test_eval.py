@@ -11,7 +11,7 @@ from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import NAV_METHODS, confirm, evaluate_navigation, plan_order
+from ragnav_jax.evaluation.episode import NAV_METHODS, confirm, evaluate_navigation, method_spec, plan_order
 from ragnav_jax.evaluation.execute import make_executor
 from ragnav_jax.language.episodes import Episode, SceneFacts, load_episodes
 from ragnav_jax.language.parser import parse_instruction
@@ -216,7 +216,7 @@ def test_candidate_order_properties(nodes):
 def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartment):
     """Rejected candidates hand over to the method's own next candidate; once they are spent the goal is a
     recorded failure (no lookup outside the ranking: that would mask the retrieval being evaluated)."""
-    from ragnav_jax.evaluation.episode import EpisodeState, Loop, method_spec
+    from ragnav_jax.evaluation.episode import EpisodeState, Loop
 
     cfg, bank, streams, emb, ex = setup
     ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
@@ -275,3 +275,45 @@ def test_paired_comparison_counts_episodes_and_goals():
     assert (c["episodes"], c["success_wins"], c["success_losses"]) == (3, 1, 1)
     assert (c["goals"], c["top1_wins"], c["top1_losses"]) == (4, 2, 1)
     assert c["success_p"] == 1.0
+
+
+@pytest.mark.parametrize("instruction, phrases, out", [
+    ("Go to the white radiator.", ["grey radiator at about 48 °C"], True),  # another colour said, white never
+    ("Go to the white radiator.", ["radiator", "grey radiator"], True),
+    ("Go to the white radiator.", ["radiator at about 40 °C"], False),  # colour dropped: no evidence
+    ("Go to the white radiator.", ["grey radiator", "white radiator"], False),  # views disagree: keep it
+    ("Go to the white radiator.", ["sofa"], True),  # another category
+    ("Go to the walnut desk.", ["walnut coffee table"], True),
+    ("Go to the walnut desk.", ["pine desk"], True),
+    ("Go to the couch.", ["brown sofa"], False),  # synonym
+    ("Go to the appliance in the kitchen.", ["white fridge"], False),  # hypernym
+    ("Go to the dark green potted plant.", ["green houseplant"], True),
+    ("Go to the green potted plant.", ["dark green houseplant"], False),
+    ("Go to the white potted plant.", ["green houseplant in a white pot"], False),  # a trailing attribute
+    ("Go to the white radiator.", ["a gizmo"], False),  # an unknown name: nothing to judge by
+])
+def test_record_contradicts_reads_the_captions(instruction, phrases, out):
+    from ragnav_jax.evaluation.episode import record_contradicts
+
+    assert record_contradicts(parse_instruction(instruction).subgoals[0], phrases) is out
+
+
+def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
+    """Candidates come from the method's own ranking; the pre-check drops those the captions contradict and
+    never adds one. The top-1 for retrieval accuracy stays the kernel's."""
+    from ragnav_jax.evaluation.episode import instance_phrases, retrieve_candidates, ruled_out
+    from ragnav_jax.retrieval.evaluate import prepare_batch
+
+    cfg, bank, streams, emb, ex = setup
+    eps = [Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")]
+    on = retrieve_candidates(method_spec("ragnav"), bank, [apartment], eps, emb, cfg)
+    deep_cfg = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, precheck=False, candidates=64))
+    deep = retrieve_candidates(method_spec("ragnav"), bank, [apartment], eps, emb, deep_cfg)
+    assert on.top == deep.top and on.nodes[0][0] and set(on.nodes[0][0]) <= set(deep.nodes[0][0])
+    assert len(deep.nodes[0][0]) > len(on.nodes[0][0])
+    batch, bmeta = prepare_batch(bank, [apartment], eps, emb)
+    said = instance_phrases(np.asarray(batch.index.slot_inst), bmeta.imetas)[0]
+    assert said and all(isinstance(p, str) for ps in said.values() for p in ps)
+    sg = parse_instruction("Go to the fridge at (0.0, 0.0).").subgoals[0]
+    assert ruled_out(sg, ("fridge",), np.array([30.0, 30.0]), 1.0)  # beyond the hint's radius
+    assert not ruled_out(sg, ("fridge",), np.array([0.5, 0.0]), 1.0)

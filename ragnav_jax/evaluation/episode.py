@@ -31,6 +31,7 @@ import dataclasses
 import functools
 import itertools
 import math
+import re
 import time
 from collections import Counter, defaultdict, deque
 from collections.abc import Sequence
@@ -42,7 +43,16 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.language.episodes import Episode, SceneFacts, attrs_match, head_matches, relation_holds, sensor_holds
+from ragnav_jax.language.episodes import (
+    HYPERNYMS,
+    SYNONYMS,
+    Episode,
+    SceneFacts,
+    attrs_match,
+    head_matches,
+    relation_holds,
+    sensor_holds,
+)
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
@@ -190,6 +200,89 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     return out
 
 
+@functools.cache
+def _surface_forms() -> tuple[tuple[str, str], ...]:
+    """(surface form, category) pairs a caption may use, longest first: catalogue names, the captioner's
+    synonyms, and the generator's."""
+    from ragnav_jax.memory.captioner import SYNONYMS as CAPTION_SYNONYMS
+    from ragnav_jax.world.vocabulary import CATALOG, PLANTS
+
+    pairs = {(c, c) for c in (*CATALOG, *PLANTS)}
+    pairs |= {(f.lower(), c) for c, forms in CAPTION_SYNONYMS.items() for f in forms}
+    pairs |= {(f, c) for c, forms in SYNONYMS.items() for f in forms}
+    return tuple(sorted(pairs, key=lambda p: -len(p[0])))
+
+
+def _words_in(needle: str, text: str) -> bool:
+    return re.search(r"(?<![\w-])" + re.escape(needle) + r"(?![\w-])", text) is not None
+
+
+def read_record(phrase: str) -> tuple[str | None, str, str]:
+    """(category, text before its name, text after it) of one caption phrase ('grey radiator at about 48 °C')."""
+    low = phrase.lower()
+    for form, cat in _surface_forms():
+        m = re.search(r"(?<![\w-])" + re.escape(form) + r"(?![\w-])", low)
+        if m:
+            return cat, low[: m.start()], low[m.end():]
+    return None, low, ""
+
+
+def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
+    """True when the memory's own description of an instance rules it out as sg's target (RAGNav's
+    pre-check; the captions hold the captioner's noise, so this can err as perception does).
+
+    Ruled out: every phrase names a category and none is the target's (head noun, synonym or
+    hypernym), or, over the phrases naming a compatible category, a wanted attribute is never said
+    while another option of the same attribute (another colour, another wood) is. Attributes not
+    mentioned are no evidence either way (the captioner drops them)."""
+    from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, TRAILING
+    from ragnav_jax.world.vocabulary import CATALOG
+
+    head = sg.target.head
+    read = [read_record(p) for p in phrases]
+    if not read or any(c is None for c, _, _ in read):
+        return False
+    fits = [(c, pre, post) for c, pre, post in read if head == c or head in SYNONYMS.get(c, ()) or c in HYPERNYMS.get(head, ())]
+    if not fits:
+        return True
+    for want in sg.target.attributes:
+        for cat, _, _ in fits[:1]:
+            entry = CATALOG.get(cat)
+            kinds = [(k, opts) for k, opts in (entry.attrs if entry else ()) if want in opts]
+            for kind, opts in kinds:
+                def said(opt, kind=kind):
+                    if kind in TRAILING:
+                        return any(TRAILING[kind].format(opt) in post for _, _, post in fits)
+                    return kind in ADJECTIVE_KEYS and any(_words_in(opt, pre) for _, pre, _ in fits)
+                if not said(want) and any(said(o) for o in opts if o != want and want not in o.split()):
+                    return True
+    return False
+
+
+def ruled_out(sg: Subgoal | None, phrases: Sequence[str], est: np.ndarray, location_radius: float) -> bool:
+    """RAGNav's pre-check of a candidate instance on what the memory holds: its captions contradict the
+    target (record_contradicts), or its estimated position lies beyond the coordinate hint's radius."""
+    if sg is None:
+        return False
+    if sg.location is not None and math.dist(est, (sg.location.x, sg.location.y)) > location_radius:
+        return True
+    return record_contradicts(sg, phrases)
+
+
+def instance_phrases(slot_inst: np.ndarray, imetas: Sequence) -> list[dict[int, tuple[str, ...]]]:
+    """Per scene, instance -> every caption phrase the key poses used for it. slot_inst: (B, N, S)."""
+    out = []
+    for b, meta in enumerate(imetas):
+        d: dict[int, list[str]] = defaultdict(list)
+        for n, row in enumerate(meta.slot_phrases):
+            for j, ph in enumerate(row):
+                c = int(slot_inst[b, n, j]) if j < slot_inst.shape[2] else -1
+                if c >= 0 and ph not in d[c]:
+                    d[c].append(ph)
+        out.append({c: tuple(v) for c, v in d.items()})
+    return out
+
+
 # ----------------------------------------------------------------------------------------------------
 # Perception phase: candidates for every subgoal of every episode
 
@@ -200,6 +293,7 @@ class Candidates:
     nodes: list  # per episode: list (per goal) of candidate node lists, best first
     timing: dict
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
+    top: list | None = None  # per episode, per goal: the retrieval's top-1 node (None: nothing retrieved)
 
 
 @jax.jit
@@ -280,6 +374,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
     cand_of: dict[tuple[str, int], list[int]] = {}
     est_of: dict[tuple[str, int], list] = {}
+    top_of: dict[tuple[str, int], int | None] = {}  # the kernel's top-1 (retrieval accuracy), before any pre-check
     timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
     if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
@@ -308,13 +403,20 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             # instances with estimated positions): the reflection looks for the target there.
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
-            for (ep, kk, _goal, _sg), sl in zip(bmeta.items, bmeta.slots):
+            said = instance_phrases(slot_inst, bmeta.imetas)  # per scene: instance -> the captions' phrases
+            for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
                     b_, q_ = sl
                     ranked = candidate_order(score[sl], relaxed[sl], category[sl], node_live[b_], cfg.eval.widen)
                     ranked = [int(n) for n in ranked[: k * CANDIDATE_DEPTH]]
+                    top_of[(ep.id, kk)] = ranked[0] if ranked else None
                     inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
-                    pick = distinct_instances(inst, k)
+                    pick = distinct_instances(inst, len(inst))
+                    if cfg.eval.precheck:  # RAGNav's pre-check on the memory's own records (no driving)
+                        kept = [j for j in pick if inst[j] < 0 or not ruled_out(
+                            sg, said[b_].get(inst[j], ()), inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
+                        pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
+                    pick = pick[:k]
                     cand_of[(ep.id, kk)] = [ranked[j] for j in pick]
                     est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
     elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
@@ -350,8 +452,10 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     for ep, kk, _goal, _sg in items:
         per_ep[ep.id].append(cand_of.get((ep.id, kk), []))
         est_ep[ep.id].append(est_of.get((ep.id, kk), [None] * len(cand_of.get((ep.id, kk), []))))
+    top = [[top_of[(ep.id, kk)] if (ep.id, kk) in top_of else (c[0] if c else None)
+            for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,
-                      [est_ep[ep.id] for ep in episodes])
+                      [est_ep[ep.id] for ep in episodes], top)
 
 
 # ----------------------------------------------------------------------------------------------------

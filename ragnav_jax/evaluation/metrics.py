@@ -95,8 +95,9 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
     else:
         for g in range(G):
             c = cands.nodes[st.e][g] if g < len(cands.nodes[st.e]) else []
+            t = cands.top[st.e][g] if cands.top is not None and g < len(cands.top[st.e]) else (c[0] if c else None)
             gidx = ids.index(ep.goals[g]) if ep.goals[g] in ids else -1
-            top1.append(bool(c) and gidx >= 0 and gidx in set(obs[c[0]].tolist()))
+            top1.append(t is not None and gidx >= 0 and gidx in set(obs[t].tolist()))
     first = [cands.nodes[st.e][g][0] if g < len(cands.nodes[st.e]) and cands.nodes[st.e][g] else None for g in st.planned]
     start = loop.nearest(st.b, sc.start.position[:2])
     r1, r2 = _route(loop, st.b, start, first) if loop.spec.retrieval != "etpnav" else (float("nan"), float("nan"))
