@@ -41,8 +41,8 @@ def main(argv=None) -> int:
     for m in methods:
         s, p = res[m], PAPER[m]
         c = paired[m] = paired_comparison(full, episode_rows(args, m)) if m != "ragnav" else None
-        pair_s = "-" if c is None else f"{c['success_wins']} / {c['success_losses']} ({c['success_p']:.3g})"
-        pair_r = "-" if c is None else f"{c['top1_wins']} / {c['top1_losses']} ({c['top1_p']:.3g})"
+        pair_s = "-" if c is None else f"{c['success_wins']} / {c['success_losses']} ({c['success_p']:.2g})"
+        pair_r = "-" if c is None else f"{c['top1_wins']} / {c['top1_losses']} ({c['top1_p']:.2g})"
         rows.append([NAMES[m], fmt(s["retrieval_accuracy"], 3), fmt(p[0]), fmt(s["travel_distance_m"]), fmt(p[1]),
                      fmt(s["success_rate"], 3), fmt(p[2]), str(s["episodes"]), pair_s, pair_r])
     out = Path(args.out)

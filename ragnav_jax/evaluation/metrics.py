@@ -183,5 +183,5 @@ def paired_comparison(base: list[dict], other: list[dict]) -> dict:
     r_wins = sum(x and not y for x, y in pairs)
     r_losses = sum(y and not x for x, y in pairs)
     return {"episodes": len(common), "success_wins": wins, "success_losses": losses,
-            "success_p": round(sign_test_p(wins, losses), 4), "goals": len(pairs), "top1_wins": r_wins,
-            "top1_losses": r_losses, "top1_p": round(sign_test_p(r_wins, r_losses), 4)}
+            "success_p": sign_test_p(wins, losses), "goals": len(pairs), "top1_wins": r_wins,
+            "top1_losses": r_losses, "top1_p": sign_test_p(r_wins, r_losses)}
