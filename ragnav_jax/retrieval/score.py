@@ -23,7 +23,7 @@ Composition (paper's terms plus ours, each switchable by a flag in RetrievalPara
    target's category; with `forest_lock` (the paper's hard pruning, off by default) the phrase also
    locks a region by beam search over the labels. Both need the forest, so "w/o semantic forest"
    ignores room constraints. The lock lost targets whose room the summariser labelled otherwise
-   ("study" summarised as an office): 1108 vs 1119 of 1252 top-1 on the paper preset's retrieval.
+   ("study" summarised as an office): 1108 vs 1119 right of 1252 goals (every second paper-preset episode).
 """
 
 from __future__ import annotations
