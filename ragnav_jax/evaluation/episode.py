@@ -213,15 +213,16 @@ def _surface_forms() -> tuple[tuple[str, str], ...]:
     return tuple(sorted(pairs, key=lambda p: -len(p[0])))
 
 
-def _words_in(needle: str, text: str) -> bool:
-    return re.search(r"(?<![\w-])" + re.escape(needle) + r"(?![\w-])", text) is not None
+def _find_words(needle: str, text: str) -> re.Match | None:
+    """`needle` in `text` as whole words (a hyphen joins words: 'white' is not in 'white-painted')."""
+    return re.search(r"(?<![\w-])" + re.escape(needle) + r"(?![\w-])", text)
 
 
 def read_record(phrase: str) -> tuple[str | None, str, str]:
     """(category, text before its name, text after it) of one caption phrase ('grey radiator at about 48 °C')."""
     low = phrase.lower()
     for form, cat in _surface_forms():
-        m = re.search(r"(?<![\w-])" + re.escape(form) + r"(?![\w-])", low)
+        m = _find_words(form, low)
         if m:
             return cat, low[: m.start()], low[m.end():]
     return None, low, ""
@@ -245,17 +246,18 @@ def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
     fits = [(c, pre, post) for c, pre, post in read if head == c or head in SYNONYMS.get(c, ()) or c in HYPERNYMS.get(head, ())]
     if not fits:
         return True
+    entry = CATALOG.get(fits[0][0])
+
+    def said(opt: str, kind: str) -> bool:  # some compatible phrase states this option of this attribute
+        if kind in TRAILING:
+            return any(TRAILING[kind].format(opt) in post for _, _, post in fits)
+        return kind in ADJECTIVE_KEYS and any(_find_words(opt, pre) for _, pre, _ in fits)
+
     for want in sg.target.attributes:
-        for cat, _, _ in fits[:1]:
-            entry = CATALOG.get(cat)
-            kinds = [(k, opts) for k, opts in (entry.attrs if entry else ()) if want in opts]
-            for kind, opts in kinds:
-                def said(opt, kind=kind):
-                    if kind in TRAILING:
-                        return any(TRAILING[kind].format(opt) in post for _, _, post in fits)
-                    return kind in ADJECTIVE_KEYS and any(_words_in(opt, pre) for _, pre, _ in fits)
-                if not said(want) and any(said(o) for o in opts if o != want and want not in o.split()):
-                    return True
+        for kind, opts in (entry.attrs if entry else ()):
+            if want in opts and not said(want, kind) and any(
+                    said(o, kind) for o in opts if o != want and want not in o.split()):
+                return True
     return False
 
 
