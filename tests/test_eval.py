@@ -301,7 +301,7 @@ def test_record_contradicts_reads_the_captions(instruction, phrases, out):
 def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
     """Candidates come from the method's own ranking; the pre-check drops those the captions contradict and
     never adds one. The top-1 for retrieval accuracy stays the kernel's."""
-    from ragnav_jax.evaluation.episode import instance_phrases, retrieve_candidates, ruled_out
+    from ragnav_jax.evaluation.episode import retrieve_candidates, ruled_out
     from ragnav_jax.retrieval.evaluate import prepare_batch
 
     cfg, bank, streams, emb, ex = setup
@@ -312,8 +312,11 @@ def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
     assert on.top == deep.top and on.nodes[0][0] and set(on.nodes[0][0]) <= set(deep.nodes[0][0])
     assert len(deep.nodes[0][0]) > len(on.nodes[0][0])
     batch, bmeta = prepare_batch(bank, [apartment], eps, emb)
-    said = instance_phrases(np.asarray(batch.index.slot_inst), bmeta.imetas)[0]
-    assert said and all(isinstance(p, str) for ps in said.values() for p in ps)
+    said = bmeta.imetas[0].instance_phrases  # every phrase per instance, also those past the embedded max_phrases
+    slot_inst = np.asarray(batch.index.slot_inst)[0]
+    for n, row in enumerate(bmeta.imetas[0].slot_phrases):
+        for j, ph in enumerate(row):
+            assert ph in said[slot_inst[n, j]]
     sg = parse_instruction("Go to the fridge at (0.0, 0.0).").subgoals[0]
     assert ruled_out(sg, ("fridge",), np.array([30.0, 30.0]), 1.0)  # beyond the hint's radius
     assert not ruled_out(sg, ("fridge",), np.array([0.5, 0.0]), 1.0)

@@ -31,7 +31,6 @@ import dataclasses
 import functools
 import itertools
 import math
-import re
 import time
 from collections import Counter, defaultdict, deque
 from collections.abc import Sequence
@@ -44,16 +43,16 @@ from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
 from ragnav_jax.language.episodes import (
-    HYPERNYMS,
-    SYNONYMS,
     Episode,
     SceneFacts,
     attrs_match,
+    category_matches,
     head_matches,
     relation_holds,
     sensor_holds,
 )
 from ragnav_jax.language.types import Subgoal
+from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, TRAILING, find_words, read_phrase
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
@@ -200,34 +199,6 @@ def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_rad
     return out
 
 
-@functools.cache
-def _surface_forms() -> tuple[tuple[str, str], ...]:
-    """(surface form, category) pairs a caption may use, longest first: catalogue names, the captioner's
-    synonyms, and the generator's."""
-    from ragnav_jax.memory.captioner import SYNONYMS as CAPTION_SYNONYMS
-    from ragnav_jax.world.vocabulary import CATALOG, PLANTS
-
-    pairs = {(c, c) for c in (*CATALOG, *PLANTS)}
-    pairs |= {(f.lower(), c) for c, forms in CAPTION_SYNONYMS.items() for f in forms}
-    pairs |= {(f, c) for c, forms in SYNONYMS.items() for f in forms}
-    return tuple(sorted(pairs, key=lambda p: -len(p[0])))
-
-
-def _find_words(needle: str, text: str) -> re.Match | None:
-    """`needle` in `text` as whole words (a hyphen joins words: 'white' is not in 'white-painted')."""
-    return re.search(r"(?<![\w-])" + re.escape(needle) + r"(?![\w-])", text)
-
-
-def read_record(phrase: str) -> tuple[str | None, str, str]:
-    """(category, text before its name, text after it) of one caption phrase ('grey radiator at about 48 °C')."""
-    low = phrase.lower()
-    for form, cat in _surface_forms():
-        m = _find_words(form, low)
-        if m:
-            return cat, low[: m.start()], low[m.end():]
-    return None, low, ""
-
-
 def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
     """True when the memory's own description of an instance rules it out as sg's target (RAGNav's
     pre-check; the captions hold the captioner's noise, so this can err as perception does).
@@ -236,14 +207,12 @@ def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
     hypernym), or, over the phrases naming a compatible category, a wanted attribute is never said
     while another option of the same attribute (another colour, another wood) is. Attributes not
     mentioned are no evidence either way (the captioner drops them)."""
-    from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, TRAILING
     from ragnav_jax.world.vocabulary import CATALOG
 
-    head = sg.target.head
-    read = [read_record(p) for p in phrases]
+    read = [read_phrase(p) for p in phrases]
     if not read or any(c is None for c, _, _ in read):
         return False
-    fits = [(c, pre, post) for c, pre, post in read if head == c or head in SYNONYMS.get(c, ()) or c in HYPERNYMS.get(head, ())]
+    fits = [(c, pre, post) for c, pre, post in read if category_matches(c, sg.target.head)]
     if not fits:
         return True
     entry = CATALOG.get(fits[0][0])
@@ -251,7 +220,7 @@ def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
     def said(opt: str, kind: str) -> bool:  # some compatible phrase states this option of this attribute
         if kind in TRAILING:
             return any(TRAILING[kind].format(opt) in post for _, _, post in fits)
-        return kind in ADJECTIVE_KEYS and any(_find_words(opt, pre) for _, pre, _ in fits)
+        return kind in ADJECTIVE_KEYS and any(find_words(opt, pre) for _, pre, _ in fits)
 
     for want in sg.target.attributes:
         for kind, opts in (entry.attrs if entry else ()):
@@ -271,20 +240,6 @@ def ruled_out(sg: Subgoal | None, phrases: Sequence[str], est: np.ndarray, locat
     return record_contradicts(sg, phrases)
 
 
-def instance_phrases(slot_inst: np.ndarray, imetas: Sequence) -> list[dict[int, tuple[str, ...]]]:
-    """Per scene, instance -> every caption phrase the key poses used for it. slot_inst: (B, N, S)."""
-    out = []
-    for b, meta in enumerate(imetas):
-        d: dict[int, list[str]] = defaultdict(list)
-        for n, row in enumerate(meta.slot_phrases):
-            for j, ph in enumerate(row):
-                c = int(slot_inst[b, n, j]) if j < slot_inst.shape[2] else -1
-                if c >= 0 and ph not in d[c]:
-                    d[c].append(ph)
-        out.append({c: tuple(v) for c, v in d.items()})
-    return out
-
-
 # ----------------------------------------------------------------------------------------------------
 # Perception phase: candidates for every subgoal of every episode
 
@@ -295,7 +250,7 @@ class Candidates:
     nodes: list  # per episode: list (per goal) of candidate node lists, best first
     timing: dict
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
-    top: list | None = None  # per episode, per goal: the retrieval's top-1 node (None: nothing retrieved)
+    top: list = dataclasses.field(default_factory=list)  # per episode, per goal: the retrieval's top-1 node or None
 
 
 @jax.jit
@@ -405,7 +360,6 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             # instances with estimated positions): the reflection looks for the target there.
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
-            said = instance_phrases(slot_inst, bmeta.imetas)  # per scene: instance -> the captions' phrases
             for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
                     b_, q_ = sl
@@ -416,7 +370,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                     pick = distinct_instances(inst, len(inst))
                     if cfg.eval.precheck:  # RAGNav's pre-check on the memory's own records (no driving)
                         kept = [j for j in pick if inst[j] < 0 or not ruled_out(
-                            sg, said[b_].get(inst[j], ()), inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
+                            sg, bmeta.imetas[b_].instance_phrases[inst[j]], inst_pos[b_, inst[j]],
+                            cfg.episodes.location_radius)]
                         pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
                     pick = pick[:k]
                     cand_of[(ep.id, kk)] = [ranked[j] for j in pick]

@@ -94,8 +94,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
         top1 = [None] * G
     else:
         for g in range(G):
-            c = cands.nodes[st.e][g] if g < len(cands.nodes[st.e]) else []
-            t = cands.top[st.e][g] if cands.top is not None and g < len(cands.top[st.e]) else (c[0] if c else None)
+            t = cands.top[st.e][g] if g < len(cands.top[st.e]) else None  # the retrieval's top-1 node
             gidx = ids.index(ep.goals[g]) if ep.goals[g] in ids else -1
             top1.append(t is not None and gidx >= 0 and gidx in set(obs[t].tolist()))
     first = [cands.nodes[st.e][g][0] if g < len(cands.nodes[st.e]) and cands.nodes[st.e][g] else None for g in st.planned]

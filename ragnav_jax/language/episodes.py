@@ -265,8 +265,13 @@ def attribute_phrases(o: SceneObject) -> tuple[str, ...]:
     return tuple(out)
 
 
+def category_matches(category: str, head: str) -> bool:
+    """A head noun names this category: the category itself, a synonym of it, or a hypernym of it."""
+    return head == category or head in SYNONYMS.get(category, ()) or category in HYPERNYMS.get(head, ())
+
+
 def head_matches(o: SceneObject, head: str) -> bool:
-    return head == o.category or head in SYNONYMS.get(o.category, ()) or o.category in HYPERNYMS.get(head, ())
+    return category_matches(o.category, head)
 
 
 def attrs_match(wanted: Sequence[str], has: Sequence[str]) -> bool:

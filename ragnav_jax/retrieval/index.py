@@ -30,6 +30,7 @@ class IndexMeta:
     slot_phrases: tuple[tuple[str, ...], ...]  # (n, *) caption phrase of each slot
     observed: tuple[frozenset[int], ...]  # (n,) every object visible from the node (accuracy rule)
     sensor_names: tuple[str, ...]
+    instance_phrases: tuple[tuple[str, ...], ...] = ()  # (I,) every distinct phrase the captions used for each instance
 
 
 def node_slots(meta: MemoryMeta, scene: Scene) -> tuple[list[list[int]], list[list[str]]]:
@@ -90,14 +91,15 @@ def build_scene_index(
     inst_of = associate(det_pos)
     n_inst = int(inst_of.max()) + 1 if len(dets) else 0
     I = max(max_instances or n_inst, n_inst, 1)
-    inst_phr: list[list[str]] = [[] for _ in range(n_inst)]
+    said: list[list[str]] = [[] for _ in range(n_inst)]  # every distinct phrase; the first max_phrases are embedded
     inst_obj = [-1] * n_inst
     slot_inst = np.full((n_pad, max_slots), -1, np.int32)
     for (i, j, oi, ph), c in zip(dets, inst_of):
         slot_inst[i, j] = c
         inst_obj[c] = oi
-        if ph not in inst_phr[c] and len(inst_phr[c]) < max_phrases:
-            inst_phr[c].append(ph)
+        if ph not in said[c]:
+            said[c].append(ph)
+    inst_phr = [ps[:max_phrases] for ps in said]
     flat = sorted({p for ps in inst_phr for p in ps})
     vec = dict(zip(flat, embedder.embed(flat))) if flat else {}
     inst_emb = np.zeros((I, max_phrases, D), np.float32)
@@ -160,7 +162,8 @@ def build_scene_index(
     obs = np.asarray(mem.obs_object)
     observed = tuple(frozenset(int(x) for x in obs[i] if x >= 0) for i in range(n))
     meta_out = IndexMeta(scene.name, n, tuple(tuple(o[:max_slots]) for o in objs),
-                         tuple(tuple(p[:max_slots]) for p in phrases), observed, sensor_names)
+                         tuple(tuple(p[:max_slots]) for p in phrases), observed, sensor_names,
+                         tuple(tuple(ps) for ps in said))
     return index, meta_out
 
 

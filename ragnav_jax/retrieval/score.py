@@ -116,7 +116,7 @@ def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None] * near
     inst = jnp.where(idx.slot_mask & idx.node_mask[:, None], inst, K.NEG)
     return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens, anchor_sim=anchor_sim, room=room,
-                      category=match[si], holds=holds, near=near)
+                      category=match[si], holds=holds)
 
 
 def anchor_proximity(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, anc: jax.Array) -> jax.Array:
@@ -139,14 +139,14 @@ def anchor_proximity(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, an
     return jnp.where(on, jnp.max(ev, axis=1), 1.0)
 
 
-def room_term(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, holds: jax.Array | None = None) -> jax.Array:
+def room_term(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, holds: jax.Array) -> jax.Array:
     """Soft room constraint (ours): a node's room affinity is the best similarity of the room phrase to the
     summary labels of its forest ancestors; nodes score exp((affinity - best affinity) / tau_room), so
     the best-matching region keeps full score and others decay. 1 when there is no room constraint
     (or the forest is ablated: the labels are the forest's).
 
-    `holds` (N,) marks nodes that saw an instance of the target's category; the best affinity is taken
-    over them when there are any (ours): the room phrase then ranks the target's instances by their
+    `holds` (N,) marks nodes that saw a likely instance of the target's category; the best affinity is
+    taken over them when there are any (ours): the room phrase then ranks the target's instances by their
     regions, and a target whose region the summariser labelled differently is not outscored by
     unrelated objects of the best-labelled region (the room phrase is often redundant: "the fridge in
     the kitchen" in a house with one fridge)."""
@@ -158,7 +158,7 @@ def room_term(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, holds: ja
         sims = idx.cluster_label_emb[level] @ qr  # (C,)
         aff.append(jnp.where(c >= 0, sims[jnp.maximum(c, 0)], -1.0))
     aff = jnp.max(jnp.stack(aff), axis=0)  # (N,)
-    among = idx.node_mask if holds is None else jnp.where(jnp.any(holds), holds, idx.node_mask)
+    among = jnp.where(jnp.any(holds), holds, idx.node_mask)
     best = jnp.max(jnp.where(among, aff, -1.0))
     term = jnp.exp(jnp.minimum(aff - best, 0.0) / p.tau_room)
     return jnp.where(q.has_room & (p.w_room > 0) & (p.use_forest > 0), term, 1.0)
