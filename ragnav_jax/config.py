@@ -445,6 +445,8 @@ class EvalConfig:
     # or whose estimated position lies beyond a coordinate hint's radius, before driving (see README)
     widen: bool = True  # RAGNav's candidates: after those the hard constraints kept (forest lock, anchor validation),
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
+    closest_view: bool = True  # RAGNav's legs end at the key pose that recorded the retrieved instance from
+    # closest, not at the best-scoring one (see README)
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")

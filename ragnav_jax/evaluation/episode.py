@@ -305,6 +305,21 @@ def distinct_instances(inst: Sequence[int], k: int) -> list[int]:
     return pick + rest[: k - len(pick)]
 
 
+def closest_view(slot_inst: np.ndarray, node_pos: np.ndarray, node_live: np.ndarray, est: np.ndarray, inst: int,
+                 default: int) -> int:
+    """The live key pose, among those that recorded instance `inst`, nearest to its estimated position `est`.
+
+    slot_inst (N, S) instance of each node's slots; node_pos (N, 2); node_live (N,); est (2,). The best-scoring
+    node describes the instance best, but may have seen it from across the room; the leg ends where the
+    memory saw it from closest (the Oracle's rule, on the memory's own estimates). `default` if none did.
+    """
+    saw = (slot_inst == inst).any(-1) & node_live
+    if not saw.any():
+        return default
+    d = np.linalg.norm(node_pos - est[None], axis=-1)
+    return int(np.argmin(np.where(saw, d, np.inf)))
+
+
 def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
     obs = np.asarray(bank.memory.obs_object[b])
     dist = np.asarray(bank.memory.obs_distance[b])
@@ -360,6 +375,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             # instances with estimated positions): the reflection looks for the target there.
             slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
             inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
+            node_pos = np.asarray(batch.index.node_pos)[..., :2]  # (B, N, 2)
             for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
                 if sl is not None:
                     b_, q_ = sl
@@ -374,7 +390,15 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                             cfg.episodes.location_radius)]
                         pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
                     pick = pick[:k]
-                    cand_of[(ep.id, kk)] = [ranked[j] for j in pick]
+                    nodes = [ranked[j] for j in pick]
+                    if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest;
+                        first: set[int] = set()  # a later candidate of the same instance keeps its own view
+                        for c, j in enumerate(pick):
+                            if inst[j] >= 0 and inst[j] not in first:
+                                first.add(inst[j])
+                                nodes[c] = closest_view(slot_inst[b_], node_pos[b_], node_live[b_],
+                                                        inst_pos[b_, inst[j]], inst[j], nodes[c])
+                    cand_of[(ep.id, kk)] = nodes
                     est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
     elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
         t_total, n_total = 0.0, 0
@@ -800,13 +824,17 @@ class Loop:
 
     def approach_route(self, st: EpisodeState, pose: np.ndarray, stop: np.ndarray) -> np.ndarray:
         """(n, 2) waypoints from the robot's position to an approach stop: straight where the segment is
-        clear, else over the map (key pose nearest the robot -> key pose nearest the stop -> stop)."""
+        clear, else around what is in the way with the local planner, else over the map (key pose nearest
+        the robot -> key pose nearest the stop -> stop)."""
         here, stop = np.asarray(pose[:2], np.float32), np.asarray(stop, np.float32)
         direct = np.stack([here, stop])
         if self.spec.straight or st.b not in self.obstacles:
             return direct
         if segment_clearance_np(here[None], stop[None], self.obstacles[st.b])[0] >= self._need():
             return direct
+        around = self._local(st.b, here, stop)
+        if len(around) > 2:  # a grid path near the segment (a plant, a chair): no detour over the map
+            return around
         a, t = self.attach(st.b, here), self.attach(st.b, stop)
         path = reconstruct_path(self.drive_pred[st.b], a, t) or [a]
         if len(path) <= 1 and np.linalg.norm(stop - here) <= np.linalg.norm(self.pos[st.b][path[0]] - here):
