@@ -320,3 +320,68 @@ def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
     sg = parse_instruction("Go to the fridge at (0.0, 0.0).").subgoals[0]
     assert ruled_out(sg, ("fridge",), np.array([30.0, 30.0]), 1.0)  # beyond the hint's radius
     assert not ruled_out(sg, ("fridge",), np.array([0.5, 0.0]), 1.0)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st_.integers(0, 2**31 - 1))
+def test_closest_view_is_the_nearest_key_pose_that_recorded_the_instance(seed):
+    from ragnav_jax.evaluation.episode import closest_view
+
+    rng = np.random.default_rng(seed)
+    N, S = int(rng.integers(1, 9)), int(rng.integers(1, 4))
+    slot_inst = rng.integers(-1, 4, (N, S)).astype(np.int32)
+    node_pos, live = rng.normal(size=(N, 2)).astype(np.float32), rng.random(N) < 0.8
+    est, inst = rng.normal(size=2).astype(np.float32), int(rng.integers(0, 4))
+    saw = [n for n in range(N) if live[n] and inst in slot_inst[n]]
+    want = min(saw, key=lambda n: float(np.linalg.norm(node_pos[n] - est))) if saw else -7
+    got = closest_view(slot_inst, node_pos, live, est, inst, -7)
+    if saw:  # ties: any nearest one
+        assert got in saw and np.isclose(np.linalg.norm(node_pos[got] - est), np.linalg.norm(node_pos[want] - est))
+    else:
+        assert got == -7
+
+
+def test_view_nodes_moves_only_the_first_candidate_of_each_instance():
+    from ragnav_jax.evaluation.episode import view_nodes
+
+    # nodes 0..3 on a line; node 3 recorded instance 0 from closest, node 2 instance 1
+    node_pos = np.array([[0, 0], [1, 0], [2, 0], [3, 0]], np.float32)
+    slot_inst = np.array([[0, 1], [0, -1], [1, -1], [0, -1]], np.int32)
+    inst_pos = np.array([[3.2, 0], [1.9, 0]], np.float32)
+    live = np.ones(4, bool)
+    # candidates: node 0 (instance 0), node 0 (instance 1), node 1 (instance 0 again), node 2 (no instance)
+    assert view_nodes([0, 0, 1, 2], [0, 1, 0, -1], slot_inst, node_pos, live, inst_pos) == [3, 2, 1, 2]
+    live[3] = False  # a dead key pose is never a destination
+    assert view_nodes([0, 1], [0, 0], slot_inst, node_pos, live, inst_pos) == [1, 1]
+
+
+def test_approach_route_goes_round_a_small_obstacle_without_a_map_detour(setup, apartment):
+    """Stops on opposite sides of a piece of furniture: the route bends round it with the local planner
+    (clear of everything by the robot's radius) instead of going back over the key-pose map."""
+    from ragnav_jax.evaluation.episode import GRID_WINDOW_M, EpisodeState, Loop, approach_ring, segment_clearance_np
+
+    cfg, bank, streams, emb, ex = setup
+    loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
+    ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
+    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"])
+    obs, need = loop.obstacles[0], loop._need()
+    tried = 0
+    for o in apartment.objects:
+        c, half = np.asarray(o.position[:2], np.float32), np.asarray(o.size[:2], np.float32) / 2
+        ring = approach_ring(c, half, cfg.eval.approach_gap + cfg.sim.robot_radius)
+        free = ring[segment_clearance_np(ring, ring, obs) >= need]
+        if len(free) < 2:
+            continue
+        p = free[0]
+        q = free[np.argmax(np.linalg.norm(free - p, axis=1))]  # the far side of the footprint
+        if segment_clearance_np(p[None], q[None], obs)[0] >= need:
+            continue
+        if len(loop._local(0, p, q)) <= 2:
+            continue  # no local path within the window: the map route is the fallback
+        route = loop.approach_route(st, np.array([*p, 0.0], np.float32), q)
+        tried += 1
+        np.testing.assert_allclose(route[0], p, atol=1e-5)
+        np.testing.assert_allclose(route[-1], q, atol=1e-5)
+        assert np.all(segment_clearance_np(route[:-1], route[1:], obs) >= need * 0.99)
+        assert np.linalg.norm(np.diff(route, axis=0), axis=1).sum() <= np.linalg.norm(q - p) + 2 * GRID_WINDOW_M
+    assert tried >= 3

@@ -320,6 +320,19 @@ def closest_view(slot_inst: np.ndarray, node_pos: np.ndarray, node_live: np.ndar
     return int(np.argmin(np.where(saw, d, np.inf)))
 
 
+def view_nodes(nodes: Sequence[int], insts: Sequence[int], slot_inst: np.ndarray, node_pos: np.ndarray,
+               node_live: np.ndarray, inst_pos: np.ndarray) -> list[int]:
+    """Where each candidate's leg ends: the first candidate of an instance at its `closest_view`; a later
+    candidate of the same instance (or one without an instance, -1) keeps its own node, so a retry sees
+    the instance from elsewhere. inst_pos (I, 2)."""
+    out, first = list(nodes), set()
+    for c, i in enumerate(insts):
+        if i >= 0 and i not in first:
+            first.add(i)
+            out[c] = closest_view(slot_inst, node_pos, node_live, inst_pos[i], i, out[c])
+    return out
+
+
 def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
     obs = np.asarray(bank.memory.obs_object[b])
     dist = np.asarray(bank.memory.obs_distance[b])
@@ -391,13 +404,9 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                         pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
                     pick = pick[:k]
                     nodes = [ranked[j] for j in pick]
-                    if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest;
-                        first: set[int] = set()  # a later candidate of the same instance keeps its own view
-                        for c, j in enumerate(pick):
-                            if inst[j] >= 0 and inst[j] not in first:
-                                first.add(inst[j])
-                                nodes[c] = closest_view(slot_inst[b_], node_pos[b_], node_live[b_],
-                                                        inst_pos[b_, inst[j]], inst[j], nodes[c])
+                    if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest
+                        nodes = view_nodes(nodes, [inst[j] for j in pick], slot_inst[b_], node_pos[b_],
+                                           node_live[b_], inst_pos[b_])
                     cand_of[(ep.id, kk)] = nodes
                     est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
     elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
