@@ -58,7 +58,7 @@ from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.retrieval import kernels as K
 from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
-from ragnav_jax.retrieval.evaluate import goal_items, prepare_batch
+from ragnav_jax.retrieval.evaluate import goal_items, prepare_batch, scored_batch
 from ragnav_jax.retrieval.index import node_slots
 from ragnav_jax.retrieval.params import ablation_params, params_from_config
 from ragnav_jax.retrieval.score import score_subgoal
@@ -257,12 +257,8 @@ class Candidates:
 def _ranked_terms(index, queries, params):
     """What candidate_order ranks by, for every (scene, subgoal slot, node), each (B, Q, N): the final
     score, the relaxed score, category match, and the node's best-matching observation slot (int32)."""
-
-    def one(idx, q):
-        s, ex = score_subgoal(idx, q, params)
-        return s, ex["relaxed"], ex["category"], ex["instance"]
-
-    return jax.vmap(lambda idx, qs: jax.vmap(lambda q: one(idx, q))(qs))(index, queries)
+    s, ex = scored_batch(index, queries, params)
+    return s, ex["relaxed"], ex["category"], ex["instance"]
 
 
 def candidate_order(score: np.ndarray, relaxed: np.ndarray, category: np.ndarray, live: np.ndarray,
@@ -334,14 +330,14 @@ def view_nodes(nodes: Sequence[int], insts: Sequence[int], slot_inst: np.ndarray
 
 
 def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
+    """The key pose that observed scene object `gidx` from closest (ground truth: the Oracle); -1 if none did."""
     obs = np.asarray(bank.memory.obs_object[b])
     dist = np.asarray(bank.memory.obs_distance[b])
     hit = obs == gidx
     if hit.any():
         d = np.where(hit, dist, np.inf).min(1)
         return int(np.argmin(d))
-    n = bank.metas[b].num_nodes
-    return -1 if n == 0 else -1
+    return -1
 
 
 def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],

@@ -48,17 +48,21 @@ def _median_time(fn, repeats: int = 7) -> float:
     return float(np.median(ts))
 
 
-def node_scores(index: RetrievalIndex, queries: QueryArrays, params: RetrievalParams, gate_tau=None) -> jax.Array:
-    """Scores of every node for every (scene, query slot): index (B, ...), queries (B, Q, ...) -> (B, Q, N).
-
-    The one batched scoring path: evaluation, sweeps (vmapped over a grid of params) and the tuning
-    surrogate (with gate_tau) all call it.
-    """
+def scored_batch(index: RetrievalIndex, queries: QueryArrays, params: RetrievalParams, gate_tau=None):
+    """score_subgoal for every (scene, query slot): index (B, ...), queries (B, Q, ...) -> scores (B, Q, N)
+    and the explanation dict, each entry (B, Q, N). The one batched scoring path: evaluation, the closed
+    loop's candidate ranking, sweeps (vmapped over a grid of params) and the tuning surrogate (with
+    gate_tau) all go through it; under jit, explanation entries nobody reads are not computed."""
 
     def one_scene(idx, qs):
-        return jax.vmap(lambda q: score_subgoal(idx, q, params, gate_tau)[0])(qs)
+        return jax.vmap(lambda q: score_subgoal(idx, q, params, gate_tau))(qs)
 
     return jax.vmap(one_scene)(index, queries)
+
+
+def node_scores(index: RetrievalIndex, queries: QueryArrays, params: RetrievalParams, gate_tau=None) -> jax.Array:
+    """Scores of every node for every (scene, query slot): (B, Q, N) (scored_batch without the explanation)."""
+    return scored_batch(index, queries, params, gate_tau)[0]
 
 
 def best_nodes(index: RetrievalIndex, queries: QueryArrays, qmask: jax.Array, params: RetrievalParams):
