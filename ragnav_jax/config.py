@@ -51,8 +51,9 @@ class WorldConfig:
     door_width: float = 1.0  # metres
     extra_door_prob: float = 0.35  # chance of a door between adjacent rooms beyond the spanning tree
     min_distractor_categories: int = 3  # categories that appear at least twice per scene
-    room_types: tuple[str, ...] = ROOM_TYPES
+    room_types: tuple[str, ...] = ROOM_TYPES  # the seen default becomes the unseen types under split=unseen
     name_prefix: str = "house"
+    split: str = "seen"  # seen | unseen: catalogue, room types and attribute kinds (world/vocabulary.py)
 
     def __post_init__(self):
         _check(self.num_scenes >= 1, "world.num_scenes", "must be >= 1")
@@ -67,6 +68,11 @@ class WorldConfig:
         _check(0.6 <= self.door_width <= 2.0, "world.door_width", "must be in [0.6, 2.0] metres")
         _check(0.0 <= self.extra_door_prob <= 1.0, "world.extra_door_prob", "must be in [0, 1]")
         _check(len(self.room_types) >= 1, "world.room_types", "must name at least one room type")
+        _check(self.split in ("seen", "unseen"), "world.split", "must be seen or unseen")
+        if self.split == "unseen" and tuple(self.room_types) == ROOM_TYPES:
+            from ragnav_jax.world.vocabulary import ROOM_TYPES_UNSEEN
+
+            object.__setattr__(self, "room_types", ROOM_TYPES_UNSEEN)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -111,6 +117,8 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
+    split: str = "seen"  # seen: the generator's own names and sentence templates | unseen: other names (the
+    # world's unseen synonyms and hypernyms) and sentence structures (language/phrasings.py)
 
     def __post_init__(self):
         for k in ("text", "text_location", "text_location_sensor"):
@@ -121,6 +129,7 @@ class EpisodesConfig:
         _check(self.near_distance > 0, "episodes.near_distance", "must be > 0")
         _check(self.location_radius > 0, "episodes.location_radius", "must be > 0")
         _check(self.location_margin >= self.location_radius, "episodes.location_margin", "must be >= location_radius")
+        _check(self.split in ("seen", "unseen"), "episodes.split", "must be one of seen, unseen")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -447,6 +456,9 @@ class EvalConfig:
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
     closest_view: bool = True  # RAGNav's legs end at the key pose that recorded the retrieved instance from
     # closest, not at the best-scoring one (see README)
+    verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
+    verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
+    verify_confusion: float = 0.01  # ... and chance the object is named as a similar category
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")

@@ -1,4 +1,5 @@
-"""CLI subcommands of the evaluation stage: sweep (hyperparameter grids) and tune (gradient tuning)."""
+"""CLI subcommands of the evaluation stage: sweep (hyperparameter grids), tune (gradient tuning) and
+fit-verifier (the reflection's thresholds, fitted on the seen split)."""
 
 from __future__ import annotations
 
@@ -71,7 +72,32 @@ def cmd_tune(args, cfg) -> int:
     return 0
 
 
+def cmd_fit_verifier(args, cfg) -> int:
+    from ragnav_jax.evaluation.fitting import fit_verifier, write_fitted
+    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.runs import init_run
+
+    if args.scenes < 1:
+        raise UserError("--scenes: must be >= 1")
+    out = Path(args.out)
+    init_run(out, cfg, "fit-verifier")
+    embedder = make_embedder(cfg.memory.embedder, dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
+                             buckets=cfg.memory.token_buckets)
+    entry = fit_verifier(cfg, embedder, scenes=args.scenes, seed=args.seed)
+    path = write_fitted(entry, cfg.memory.embedder, out / "fitted.json")
+    p, acc = entry["params"], entry["balanced_accuracy"]
+    print(", ".join(f"{k}={v}" for k, v in p.items()) + " (balanced accuracy on the seen training houses: "
+          + ", ".join(f"{k} {v}" for k, v in acc.items()) + f") -> {path}; use with eval.verifier_file={path}")
+    return 0
+
+
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    p = sub.add_parser("fit-verifier", parents=[common],
+                       help="fit the reflection's verifier thresholds on seen-split houses (writes OUT/fitted.json)")
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--scenes", type=int, default=8, help="seen-split training houses (default 8)")
+    p.add_argument("--seed", type=int, default=12345, help="seed of the training houses (not the evaluation's)")
+    p.set_defaults(func=cmd_fit_verifier)
     for name, func, text in (
         ("sweep", cmd_sweep, "retrieval accuracy over a hyperparameter grid (sweep section), one compiled call per chunk"),
         ("tune", cmd_tune, "optax tuning of the continuous retrieval hyperparameters vs the best grid point"),

@@ -28,11 +28,10 @@ exploration from the start pose until the target is seen, then approaches it; in
 from __future__ import annotations
 
 import dataclasses
-import functools
 import itertools
 import math
 import time
-from collections import Counter, defaultdict, deque
+from collections import defaultdict, deque
 from collections.abc import Sequence
 
 import jax
@@ -42,17 +41,9 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.language.episodes import (
-    Episode,
-    SceneFacts,
-    attrs_match,
-    category_matches,
-    head_matches,
-    relation_holds,
-    sensor_holds,
-)
+from ragnav_jax.evaluation.verify import Verifier, recorded, verdict_table
+from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
-from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, TRAILING, find_words, read_phrase
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
@@ -132,112 +123,15 @@ def box_distance(obj, xy) -> float:
     return math.hypot(dx, dy)
 
 
-@functools.cache
-def _summariser():
-    from ragnav_jax.memory.summarise import Summariser
-
-    return Summariser()
-
-
-def inferred_room_type(room: str, pool: Sequence) -> str:
-    """The type of room `room` inferred from the categories of the objects of `pool` in it (the forest
-    summariser's room prototypes; the robot tells rooms apart by their walls, not by ground-truth labels)."""
-    counts = Counter(o.category for o in pool if o.room == room)
-    return _summariser().infer_type(counts, 2)[0]
-
-
-def confirm(facts: SceneFacts, sg: Subgoal, visible: Sequence[int], location_radius: float,
-            known: Sequence[int] | None = None) -> list[int]:
-    """Visible objects (indices into scene.objects) that the robot's check accepts as sg's target.
-
-    The perceptual part uses only what the robot sees now: the head noun (category, synonym or
-    hypernym, as an open-vocabulary detector would), the attributes, a coordinate hint (the robot knows
-    where it is) and sensor thresholds read off the object. Evidence that one view cannot hold comes
-    from the robot's memory when `known` (every object its key poses recorded) is given: relations are
-    checked against anchors seen now *or* recorded, and a superlative ranks the object among the
-    recorded instances of its description (within its own room when the subgoal names one, since the
-    retrieval's room term chose that room). Without `known` only the current view counts and
-    superlatives are not checked. With `known`, a room name is checked against the room type inferred
-    from the objects recorded in the object's room (inferred_room_type); without it, rooms are not checked.
-    """
-    objs = facts.scene.objects
-    pool_idx = sorted(set(visible) | set(known or ()))
-    pool = [objs[i] for i in pool_idx]
-    t = sg.target
-
-    def fits(o) -> bool:  # head, attributes, relations (anchors in the pool), hint, sensor thresholds
-        if not head_matches(o, t.head) or not attrs_match(t.attributes, facts.attrs[o.id]):
-            return False
-        for r in t.relations:  # an anchor neither in view nor in memory leaves the relation unverifiable:
-            # it does not count against the object (the retrieval already scored it); one that is there must hold
-            anchors = [a for a in pool if head_matches(a, r.anchor.head) and attrs_match(r.anchor.attributes, facts.attrs[a.id])]
-            if anchors and not any(relation_holds(r.type, o, a, facts.near_distance) for a in anchors):
-                return False
-        if sg.location is not None and math.dist(o.position[:2], (sg.location.x, sg.location.y)) > location_radius:
-            return False
-        for c in sg.sensors:
-            if c.reading not in o.readings or (not c.is_superlative and not sensor_holds(c, o.readings[c.reading])):
-                return False
-        return True
-
-    out = [i for i in visible if fits(objs[i])]
-    if known is None:
-        return out
-    if sg.room is not None:  # the room's type as the robot infers it from what it recorded there
-        out = [i for i in out if inferred_room_type(objs[i].room, pool) == sg.room]
-    for c in sg.sensors:
-        if c.is_superlative and out:
-            keep = []
-            for i in out:
-                o = objs[i]
-                rivals = [x for x in pool if fits(x) and (sg.room is None or x.room == o.room)]
-                vals = [x.readings[c.reading] for x in rivals] + [o.readings[c.reading]]
-                best = max(vals) if c.comparator == "max" else min(vals)
-                if o.readings[c.reading] == best:
-                    keep.append(i)
-            out = keep
-    return out
-
-
-def record_contradicts(sg: Subgoal, phrases: Sequence[str]) -> bool:
-    """True when the memory's own description of an instance rules it out as sg's target (RAGNav's
-    pre-check; the captions hold the captioner's noise, so this can err as perception does).
-
-    Ruled out: every phrase names a category and none is the target's (head noun, synonym or
-    hypernym), or, over the phrases naming a compatible category, a wanted attribute is never said
-    while another option of the same attribute (another colour, another wood) is. Attributes not
-    mentioned are no evidence either way (the captioner drops them)."""
-    from ragnav_jax.world.vocabulary import CATALOG
-
-    read = [read_phrase(p) for p in phrases]
-    if not read or any(c is None for c, _, _ in read):
-        return False
-    fits = [(c, pre, post) for c, pre, post in read if category_matches(c, sg.target.head)]
-    if not fits:
-        return True
-    entry = CATALOG.get(fits[0][0])
-
-    def said(opt: str, kind: str) -> bool:  # some compatible phrase states this option of this attribute
-        if kind in TRAILING:
-            return any(TRAILING[kind].format(opt) in post for _, _, post in fits)
-        return kind in ADJECTIVE_KEYS and any(find_words(opt, pre) for _, pre, _ in fits)
-
-    for want in sg.target.attributes:
-        for kind, opts in (entry.attrs if entry else ()):
-            if want in opts and not said(want, kind) and any(
-                    said(o, kind) for o in opts if o != want and want not in o.split()):
-                return True
-    return False
-
-
-def ruled_out(sg: Subgoal | None, phrases: Sequence[str], est: np.ndarray, location_radius: float) -> bool:
-    """RAGNav's pre-check of a candidate instance on what the memory holds: its captions contradict the
-    target (record_contradicts), or its estimated position lies beyond the coordinate hint's radius."""
+def ruled_out(verifier, sg: Subgoal | None, names, texts, vocab, est: np.ndarray, location_radius: float) -> bool:
+    """RAGNav's pre-check of a candidate instance on what the memory holds: its recorded names and
+    descriptions contradict the target (Verifier.contradicts), or its estimated position lies beyond the
+    coordinate hint's radius."""
     if sg is None:
         return False
     if sg.location is not None and math.dist(est, (sg.location.x, sg.location.y)) > location_radius:
         return True
-    return record_contradicts(sg, phrases)
+    return verifier.contradicts(sg, names, texts, vocab)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -341,8 +235,9 @@ def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
 
 
 def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
-                        embedder, cfg: Config) -> Candidates:
-    """Top-k candidate nodes per subgoal for a method; timings of the retrieval kernels."""
+                        embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
+    """Top-k candidate nodes per subgoal for a method; timings of the retrieval kernels. RAGNav's pre-check
+    (`eval.precheck`) needs the verifier."""
     k = cfg.eval.candidates
     names = list(bank.names)
     by_name = {s.name: s for s in scenes}
@@ -361,6 +256,9 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
         batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
         timing["embed_ms"] = bmeta.embed_ms
+        rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
+        name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
+        vocab = [sorted({x.lower() for ns in r[0].values() for x in ns}) for r in rec]  # per scene: every name
         if batch is not None:
             jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
             t0 = time.perf_counter()
@@ -393,10 +291,11 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                     top_of[(ep.id, kk)] = ranked[0] if ranked else None
                     inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
                     pick = distinct_instances(inst, len(inst))
-                    if cfg.eval.precheck:  # RAGNav's pre-check on the memory's own records (no driving)
-                        kept = [j for j in pick if inst[j] < 0 or not ruled_out(
-                            sg, bmeta.imetas[b_].instance_phrases[inst[j]], inst_pos[b_, inst[j]],
-                            cfg.episodes.location_radius)]
+                    if cfg.eval.precheck and verifier is not None:  # on the memory's own records (no driving)
+                        texts = [bmeta.imetas[b_].instance_phrases[inst[j]] if inst[j] >= 0 else () for j in pick]
+                        kept = [j for j, ts in zip(pick, texts) if inst[j] < 0 or not ruled_out(
+                            verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_],
+                            inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
                         pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
                     pick = pick[:k]
                     nodes = [ranked[j] for j in pick]
@@ -518,7 +417,6 @@ class Loop:
                  streams: dict | None):
         self.spec, self.bank, self.cfg, self.ex = spec, bank, cfg, executor
         self.scenes = {s.name: s for s in scenes}
-        self.facts = {s.name: SceneFacts.build(s, cfg.episodes) for s in scenes}
         self.pos = np.asarray(bank.memory.position)[..., :2]
         self.mask = np.asarray(bank.memory.node_mask)
         self.cost = np.asarray(bank.memory.path_cost)
@@ -534,10 +432,10 @@ class Loop:
         self._grids = executor.cache.setdefault(("grids", *key), {})
         self._local_cache = executor.cache.setdefault(("local_plans", *key), {})
         self.drive_pred = self._drive_paths(bank)
-        # Every object some key pose of the memory recorded: the on-arrival check's scene-level evidence
-        # (anchors of relations, the room's inferred type, rivals of a superlative).
+        # Every object some key pose of the memory recorded (where a look closer may find the instance).
         obs = np.asarray(bank.memory.obs_object)
         self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
+        self.verdicts: list = []  # [e][g] -> (O,) bool: the verifier's check of every scene object (verify.py)
 
     # -- helpers
     def _drive_paths(self, bank: MemoryBank) -> np.ndarray:
@@ -704,6 +602,11 @@ class Loop:
         goal = last if n <= gap else est + v / n * gap
         return np.concatenate([pts, np.asarray(goal, np.float32)[None]]).astype(np.float32)
 
+    def passing(self, st: EpisodeState, g: int, objects) -> list[int]:
+        """The objects (scene indices) that pass the verifier's check for goal g (the verdict table)."""
+        v = self.verdicts[st.e][g]
+        return [int(o) for o in objects if o < len(v) and v[o]]
+
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
         st.cptr[g] += 1
         st.rejected[g] += 1
@@ -753,22 +656,14 @@ class Loop:
         stream = self.streams.get(st.ep.scene)
         if stream is None:
             raise UserError(f"etpnav needs the exploration stream of scene '{st.ep.scene}' (RUN/explore/streams)")
-        sg = st.subgoals[g]
-        facts = self.facts[st.ep.scene]
         T = len(stream.t)
 
         key = (st.e, g)
-        if key not in self._seen:  # records where some visible object passes the check, and that object
-            allv = list(range(len(facts.scene.objects)))
+        if key not in self._seen:  # records where some visible object passes the check, and those objects
             cand = np.zeros(stream.visible.shape[1], bool)
-            cand[[o for o in allv if o in set(confirm(facts, sg, allv, self.cfg.episodes.location_radius))]] = True
-            hits = {}
-            for r in np.flatnonzero(stream.visible[:, cand].any(1)):
-                vis = [int(i) for i in np.flatnonzero(stream.visible[r])]
-                ok = confirm(facts, sg, vis, self.cfg.episodes.location_radius)
-                if ok:
-                    hits[int(r)] = ok
-            self._seen[key] = hits
+            cand[: len(self.verdicts[st.e][g])] = self.verdicts[st.e][g]
+            self._seen[key] = {int(r): [int(i) for i in np.flatnonzero(stream.visible[r] & cand)]
+                               for r in np.flatnonzero(stream.visible[:, cand].any(1))}
 
         def seen(r):
             ok = [o for o in self._seen[key].get(r, []) if (g, o) not in st.skip]
@@ -860,17 +755,14 @@ class Loop:
                 gobj = self.goal_object(st, g)
                 ok = [sc.objects.index(gobj)] if gobj is not None else []
             else:
-                ok = confirm(self.facts[st.ep.scene], st.subgoals[g], [int(i) for i in np.flatnonzero(visible)],
-                             self.cfg.episodes.location_radius, known=self.known[st.b])
+                ok = self.passing(st, g, np.flatnonzero(visible))
             ok = [o for o in ok if (g, o) not in st.skip]
             est = self.estimate(st, g) if self.spec.retrieval != "oracle" else None
             if not ok and kind == "closer" and est is not None:
                 # Still out of sight from near it (occluded, or small): the memory recorded the instance,
                 # so it passes the same check on the record and is approached at its estimated position.
                 rec = [o for o in self.known[st.b] if box_distance(sc.objects[o], est) <= SAME_INSTANCE_M]
-                ok = [o for o in confirm(self.facts[st.ep.scene], st.subgoals[g], rec,
-                                         self.cfg.episodes.location_radius, known=self.known[st.b])
-                      if (g, o) not in st.skip]
+                ok = [o for o in self.passing(st, g, rec) if (g, o) not in st.skip]
             closer = self.cfg.eval.look_closer and est is not None and kind == "nav"
             if ok:
                 if est is None:
@@ -933,8 +825,9 @@ class Loop:
 
 def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
                         method: str | None = None, streams: dict | None = None, progress: bool = False,
-                        executor: Executor | None = None) -> tuple[list[dict], dict]:
-    """Runs one method over every episode; returns per-episode rows and the summary."""
+                        executor: Executor | None = None, verifier: Verifier | None = None) -> tuple[list[dict], dict]:
+    """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
+    the same episodes can share one `verifier` (and its encoder cache)."""
     from ragnav_jax.evaluation.metrics import episode_row, summarise
 
     method = method or cfg.eval.method
@@ -948,8 +841,13 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     loop = Loop(spec, bank, scenes, cfg, ex, streams)
     # 1. instruction -> plan, for all episodes (host wall clock: parsing, embedding, retrieval, order)
     t0 = time.perf_counter()
-    cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg)
+    verifier = verifier or Verifier.build(embedder, cfg)
+    cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
     oracle = retrieve_candidates(method_spec("oracle"), bank, scenes, episodes, embedder, cfg) if method != "oracle" else cands
+    t1 = time.perf_counter()
+    if spec.retrieval != "oracle":  # the reflection's check, one verdict per (episode, goal, object)
+        loop.verdicts = verdict_table(verifier, bank, scenes, episodes, cands.subgoals)
+    cands.timing["verify_s"] = time.perf_counter() - t1
     states = []
     for e, ep in enumerate(episodes):
         b = names.index(ep.scene)

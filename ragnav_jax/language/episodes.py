@@ -80,6 +80,18 @@ HYPERNYMS: dict[str, frozenset[str]] = {
     "plant": frozenset(("potted plant", "fern", "cactus", "orchid", "tomato plant", "lemon tree")),
     "lamp": frozenset(("floor lamp", "table lamp", "desk lamp")),
 }
+
+
+def names_for(split: str) -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
+    """(synonyms, hypernyms) people use for a split's categories: the seen ones above, or the world's
+    unseen-split vocabulary (world/vocabulary.py UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS)."""
+    if split == "seen":
+        return SYNONYMS, HYPERNYMS
+    from ragnav_jax.world.vocabulary import UNSEEN_HYPERNYMS, UNSEEN_SYNONYMS
+
+    return UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS
+
+
 FRAMES = {"gold": "gold-framed", "black": "black-framed", "wooden": "wooden-framed", "aluminium": "aluminium-framed",
           "frameless": "frameless"}
 APPROX_TOL = {"temperature_c": 3.0, "ndvi": 0.05, "humidity_pct": 5.0}  # "about v" matches |r - v| <= tol
@@ -232,13 +244,15 @@ class SceneFacts:
     by_head: dict = dataclasses.field(default_factory=dict)  # head word(s) -> objects it names
     simple: dict = dataclasses.field(default_factory=dict)  # object id -> head(+attribute) Targets fitting only it
     loose: dict = dataclasses.field(default_factory=dict)  # object id -> every head(+attribute) Target fitting it
+    split: str = "seen"  # whose names (synonyms, hypernyms) descriptions use: names_for(split)
 
     @classmethod
     def build(cls, scene: Scene, cfg: EpisodesConfig) -> SceneFacts:
-        heads = {h for o in scene.objects for h in (o.category, *SYNONYMS.get(o.category, ()))} | set(HYPERNYMS)
-        by_head = {h: tuple(o for o in scene.objects if head_matches(o, h)) for h in heads}
+        syn, hyp = names_for(cfg.split)
+        heads = {h for o in scene.objects for h in (o.category, *syn.get(o.category, ()))} | set(hyp)
+        by_head = {h: tuple(o for o in scene.objects if head_matches(o, h, cfg.split)) for h in heads}
         facts = cls(scene, cfg.near_distance, cfg.location_radius, {r.id: r.type for r in scene.rooms},
-                    {o.id: attribute_phrases(o) for o in scene.objects}, by_head)
+                    {o.id: attribute_phrases(o) for o in scene.objects}, by_head, split=cfg.split)
         loose = {o.id: tuple(_simple_targets(facts, o, unique=False)) for o in scene.objects}
         simple = {
             o.id: tuple(t for t in loose[o.id] if [x.id for x in resolve_target(facts, t)] == [o.id])
@@ -254,6 +268,9 @@ def attribute_phrases(o: SceneObject) -> tuple[str, ...]:
         v = v.strip().lower()
         if k in ("pot", "door") or (k == "condition" and v == "fair") or not v:
             continue
+        if k == "state":  # written after the noun ("the lamp that is switched on"): any words
+            out.append(v)
+            continue
         if k == "frame":
             v = FRAMES.get(v, f"{v}-framed")
         if k == "size" and v == "king":
@@ -265,13 +282,14 @@ def attribute_phrases(o: SceneObject) -> tuple[str, ...]:
     return tuple(out)
 
 
-def category_matches(category: str, head: str) -> bool:
+def category_matches(category: str, head: str, split: str = "seen") -> bool:
     """A head noun names this category: the category itself, a synonym of it, or a hypernym of it."""
-    return head == category or head in SYNONYMS.get(category, ()) or category in HYPERNYMS.get(head, ())
+    syn, hyp = names_for(split)
+    return head == category or head in syn.get(category, ()) or category in hyp.get(head, ())
 
 
-def head_matches(o: SceneObject, head: str) -> bool:
-    return category_matches(o.category, head)
+def head_matches(o: SceneObject, head: str, split: str = "seen") -> bool:
+    return category_matches(o.category, head, split)
 
 
 def attrs_match(wanted: Sequence[str], has: Sequence[str]) -> bool:
@@ -311,7 +329,7 @@ def relation_holds(rtype: str, o: SceneObject, a: SceneObject, near: float) -> b
 def resolve_target(facts: SceneFacts, t: Target) -> list[SceneObject]:
     named = facts.by_head.get(t.head)
     if named is None:
-        named = [o for o in facts.scene.objects if head_matches(o, t.head)]
+        named = [o for o in facts.scene.objects if head_matches(o, t.head, facts.split)]
     out = [o for o in named if attrs_match(t.attributes, facts.attrs[o.id])] if t.attributes else list(named)
     for r in t.relations:
         anchors = resolve_target(facts, r.anchor)
@@ -351,18 +369,24 @@ def resolve(facts: SceneFacts, sg: Subgoal) -> tuple[str, ...]:
 
 
 def _target(head: str, attrs: tuple[str, ...] = (), relations: tuple[Relation, ...] = ()) -> Target:
-    return Target(" ".join((*attrs, head)), head, attrs, relations)
+    from ragnav_jax.language.phrasings import is_state
+
+    return Target(" ".join((*(a for a in attrs if not is_state(a)), head)), head, attrs, relations)
 
 
 def _expressible(head: str, attrs: tuple[str, ...]) -> bool:
-    """The words read back as these attributes and this head (no head starting with an adjective)."""
+    """The words read back as these attributes and this head (no head starting with an adjective); states
+    are written after the noun and need no check."""
+    from ragnav_jax.language.phrasings import is_state
+
+    attrs = tuple(a for a in attrs if not is_state(a))
     words = " ".join((*attrs, head)).split()
     got_attrs, got_head = split_noun_phrase(words)
     return got_head == head and " ".join(got_attrs).split() == " ".join(attrs).split()
 
 
-def _heads(o: SceneObject) -> list[str]:
-    return [h for h in (o.category, *SYNONYMS.get(o.category, ())) if _expressible(h, ())]
+def _heads(o: SceneObject, split: str = "seen") -> list[str]:
+    return [h for h in (o.category, *names_for(split)[0].get(o.category, ())) if _expressible(h, ())]
 
 
 def _attr_sets(facts: SceneFacts, o: SceneObject) -> list[tuple[str, ...]]:
@@ -373,7 +397,7 @@ def _attr_sets(facts: SceneFacts, o: SceneObject) -> list[tuple[str, ...]]:
 def _simple_targets(facts: SceneFacts, o: SceneObject, unique: bool = True) -> list[Target]:
     """Head (+ attributes) descriptions of o, unique in the scene when `unique`."""
     out = []
-    for h in _heads(o):
+    for h in _heads(o, facts.split):
         for attrs in _attr_sets(facts, o):
             if not _expressible(h, attrs):
                 continue
@@ -412,7 +436,7 @@ def _anchor_options(facts: SceneFacts, o: SceneObject, cfg: EpisodesConfig, dept
     """
     out = []
     for a in facts.scene.objects:
-        if a.id == o.id or a.id in exclude or a.category == o.category or set(_heads(a)) & set(_heads(o)):
+        if a.id == o.id or a.id in exclude or a.category == o.category or set(_heads(a, facts.split)) & set(_heads(o, facts.split)):
             continue
         types = [t for t in REL_TEXT if relation_holds(t, o, a, cfg.near_distance)]
         if not types:
@@ -420,10 +444,10 @@ def _anchor_options(facts: SceneFacts, o: SceneObject, cfg: EpisodesConfig, dept
         anchors = list(facts.simple[a.id])
         if not anchors and depth > 1:
             for rt2, t2 in _anchor_options(facts, a, cfg, depth - 1, exclude | {o.id}):
-                if any(head_matches(o, h) for h in _heads(o) if h == t2.head):
+                if any(head_matches(o, h, facts.split) for h in _heads(o, facts.split) if h == t2.head):
                     continue
                 if rt2 in ("with", "on", "near", "next_to"):
-                    for h in _heads(a):
+                    for h in _heads(a, facts.split):
                         nested = _target(h, (), (Relation(rt2, t2),))
                         if [x.id for x in resolve_target(facts, nested)] == [a.id]:
                             anchors.append(nested)
@@ -449,7 +473,7 @@ def describe_text(facts: SceneFacts, o: SceneObject, rng: np.random.Generator, c
     want_rel = rng.uniform() < cfg.relation_prob
     if want_rel or not (simple or room_opts):
         for rtype, anc in _anchor_options(facts, o, cfg, depth=2):
-            for h in _heads(o):
+            for h in _heads(o, facts.split):
                 for attrs in ((),) + tuple((a,) for a in facts.attrs[o.id][:1]):
                     if not _expressible(h, attrs):
                         continue
@@ -478,7 +502,7 @@ def _hint_text(rng, x: str, y: str) -> str:
 
 def describe_location(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig) -> tuple[Subgoal, str] | None:
     """The category name plus a coordinate hint, where the name alone has distractors."""
-    heads = _heads(o)
+    heads = _heads(o, facts.split)
     if not heads:
         return None
     head = heads[0] if len(heads) == 1 or rng.uniform() >= cfg.synonym_prob else _pick(rng, heads[1:])
@@ -495,7 +519,7 @@ def describe_location(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfi
         xs, ys = (f"{v:.1f}" if rng.uniform() < 0.5 else f"{v:g}" for v in (x, y))
         sg = Subgoal(0, _target(head), location=Location(float(xs), float(ys)))
         if resolve(facts, sg) == (o.id,):
-            return sg, _hint_text(rng, xs, ys)
+            return sg, _renderer(facts.split, "hint")(rng, xs, ys)
     return None
 
 
@@ -589,7 +613,7 @@ def describe_sensor(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig)
     if not readings:
         return None
     options = []
-    heads = _heads(o) + [h for h, cats in HYPERNYMS.items() if o.category in cats]
+    heads = _heads(o, facts.split) + [h for h, cats in names_for(facts.split)[1].items() if o.category in cats]
     room_type = facts.room_type[o.room]
     for rd, val in readings:
         tol = APPROX_TOL[rd]
@@ -618,7 +642,7 @@ def describe_sensor(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig)
                     options.append((base, SensorConstraint(rd, "approx", float(v))))
     rng.shuffle(options)
     for base, c in options:
-        prefix, tail, written = render_sensor(rng, c)
+        prefix, tail, written = _renderer(facts.split, "sensor")(rng, c)
         sg = dataclasses.replace(base, sensors=(written,))
         if resolve(facts, sg) == (o.id,):
             if prefix and not _expressible(base.target.head, ()):
@@ -746,6 +770,16 @@ def render_instruction(rng, res: list[str], order: str) -> str:
 # Episodes
 
 
+def _renderer(split: str, what: str):
+    """The split's sentence template for a goal, sensor phrase, coordinate hint or whole instruction."""
+    if split == "seen":
+        return {"goal": render_goal, "sensor": render_sensor, "hint": _hint_text, "instruction": render_instruction}[what]
+    from ragnav_jax.language import phrasings as P
+
+    return {"goal": P.render_goal_unseen, "sensor": P.render_sensor_unseen, "hint": P.hint_text_unseen,
+            "instruction": P.render_instruction_unseen}[what]
+
+
 def _rng(seed: int, scene_name: str, modality: str) -> np.random.Generator:
     return np.random.default_rng(np.random.SeedSequence([int(seed), zlib.crc32(scene_name.encode()),
                                                          MODALITIES.index(modality)]))
@@ -764,12 +798,12 @@ def _one_episode(facts: SceneFacts, modality: str, rng, cfg: EpisodesConfig):
                 got = describe_location(facts, o, rng, cfg)
                 if got:
                     sg, hint = got
-                    goals.append((o, sg, render_goal(rng, sg, hint=hint)))
+                    goals.append((o, sg, _renderer(facts.split, "goal")(rng, sg, hint=hint)))
             else:
                 got = describe_sensor(facts, o, rng, cfg)
                 if got:
                     sg, prefix, tail = got
-                    goals.append((o, sg, render_goal(rng, sg, prefix=prefix, tail=tail)))
+                    goals.append((o, sg, _renderer(facts.split, "goal")(rng, sg, prefix=prefix, tail=tail)))
             if goals:
                 used.add(o.id)
                 break
@@ -785,11 +819,11 @@ def _one_episode(facts: SceneFacts, modality: str, rng, cfg: EpisodesConfig):
         if modality == "text+location+sensor" and rng.uniform() < 0.25:
             loc = describe_location(facts, o, rng, cfg)
             if loc:
-                got = (loc[0], render_goal(rng, loc[0], hint=loc[1]))
+                got = (loc[0], _renderer(facts.split, "goal")(rng, loc[0], hint=loc[1]))
         if got is None:
             sg = describe_text(facts, o, rng, cfg)
             if sg is not None:
-                got = (sg, render_goal(rng, sg))
+                got = (sg, _renderer(facts.split, "goal")(rng, sg))
         if got is not None:
             used.add(o.id)
             goals.append((o, *got))
@@ -799,7 +833,7 @@ def _one_episode(facts: SceneFacts, modality: str, rng, cfg: EpisodesConfig):
     perm = rng.permutation(len(goals))
     goals = [goals[i] for i in perm]
     order = "strict" if len(goals) == 1 or rng.uniform() < cfg.strict_fraction else "free"
-    instruction = render_instruction(rng, [g[2] for g in goals], order)
+    instruction = _renderer(facts.split, "instruction")(rng, [g[2] for g in goals], order)
     subgoals = tuple(dataclasses.replace(sg, index=i, text=txt.strip(" ,")) for i, (_, sg, txt) in enumerate(goals))
     truth = TaskChain(instruction, subgoals, order, derive_dependencies(subgoals, order), parser="truth")
     return [o.id for o, _, _ in goals], modality, order, instruction, truth

@@ -34,7 +34,38 @@ DESCRIPTORS = frozenset(
     "digital portable folding upright variegated mirrored padded cushioned leafy flowering blooming "
     "freestanding wall-mounted spare main".split()
 )
-MODIFIER_WORDS = COLOURS | MATERIALS | DESCRIPTORS
+# States an object can be in, as written after a copula ("the lamp that is switched on", "the cabinet that's
+# open") -> the attribute string kept (multi-word states stay one attribute). A bare "on"/"off" after a
+# copula is a state only where no noun follows ("the lamp, which is on," but "the lamp that is on the table").
+STATE_PHRASES: dict[str, str] = {
+    "switched on": "switched on", "switched off": "switched off", "turned on": "turned on",
+    "turned off": "turned off", "powered on": "powered on", "powered off": "powered off",
+    "plugged in": "plugged in", "unplugged": "unplugged", "lit": "lit", "unlit": "unlit", "running": "running",
+    "idle": "idle", "folded": "folded", "unfolded": "unfolded", "folded up": "folded", "open": "open",
+    "opened": "open", "closed": "closed", "shut": "closed", "empty": "empty", "full": "full", "in use": "in use",
+    "on standby": "on standby", "on": "switched on", "off": "switched off", "left on": "switched on",
+    "left off": "switched off", "left open": "open",
+}
+# "not lit" -> "unlit": negated states that have a named opposite.
+STATE_OPPOSITES: dict[str, str] = {
+    "switched on": "switched off", "switched off": "switched on", "turned on": "turned off",
+    "turned off": "turned on", "powered on": "powered off", "powered off": "powered on", "plugged in": "unplugged",
+    "unplugged": "plugged in", "lit": "unlit", "unlit": "lit", "running": "idle", "idle": "running",
+    "folded": "unfolded", "unfolded": "folded", "open": "closed", "closed": "open", "empty": "full", "full": "empty",
+}
+# Participle states that may follow the noun without a copula ("the lamp switched on", "the kettle unplugged")
+# or precede it hyphenated ("the switched-on lamp"); adjectives such as "open" need "that is" after a noun.
+PARTICIPLE_STATES = frozenset(
+    "switched on|switched off|turned on|turned off|powered on|powered off|plugged in|unplugged|lit|unlit|"
+    "running|folded|unfolded|in use|on standby".split("|")
+)
+# Single-word states that read as modifiers before a noun ("the unlit candle"); "running" is left out
+# ("running shoes", "running machine" are nouns).
+STATE_MODIFIERS = frozenset("lit unlit unplugged idle folded unfolded".split())
+MODIFIER_WORDS = COLOURS | MATERIALS | DESCRIPTORS | STATE_MODIFIERS
+SIZE_WORDS = frozenset(
+    "big small large little tiny huge giant tall short wide narrow mini compact single double twin queen king".split()
+)
 # A hyphenated word is a modifier when its last part is one of these or ends in -ed ("gold-framed").
 HYPHEN_MODIFIER_TAILS = frozenset("size sized style styled tone toned colour color coloured colored".split())
 
@@ -46,7 +77,9 @@ ROOM_WORDS = frozenset(
 )
 ROOM_SUFFIXES = ("room", "area", "zone", "wing", "space")
 
-DETERMINERS = frozenset("the a an my our your their his her its this that these those some any".split())
+DETERMINERS = frozenset(
+    "the a an my our your their his her its this that these those some any whichever whatever".split()
+)
 # Noun phrases made only of these words name no goal ("these", "the following", "all of them").
 FILLER_NOUNS = frozenset(
     "it them that this there here one ones these those following each both all everything of three two four "
@@ -116,6 +149,16 @@ RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "
     "resting found right just directly immediately somewhere mounted hanging kept".split()
 )
+
+# Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".
+RELATIVE_PRONOUNS = frozenset("that which who".split())
+RELATIVE_CONTRACTED = frozenset("that's which's who's thats".split())  # pronoun + "is"
+COPULA_WORDS = frozenset(
+    "is are was were be been being has have had seems seem appears appear looks look stays stay remains remain "
+    "currently now still already presently also left kept".split()
+)
+NEGATED_COPULAS = frozenset("isn't aren't wasn't weren't not".split())
+MADE_OF = (("made", "of"), ("made", "from"), ("made", "out", "of"))
 
 # Reading names as written -> scene sensor key.
 READING_NAMES: dict[str, str] = {
@@ -205,6 +248,29 @@ COMPARATOR_PHRASES: dict[str, str] = {
     "near": "approx", "exactly": "approx", "=": "approx", "equal to": "approx", "of about": "approx",
     "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
 }
+_NEGATABLE = {
+    "gt": ("above", "over", "greater than", "more than", "higher than", "bigger than", "larger than", "exceeding",
+           "in excess of", "warmer than", "hotter than"),
+    "lt": ("below", "under", "less than", "lower than", "smaller than", "colder than", "cooler than"),
+}
+COMPARATOR_PHRASES.update({
+    "exceeds": "gt", "exceed": "gt", "exceeding": "gt", "surpasses": "gt", "surpassing": "gt", "beyond": "gt",
+    "tops": "gt", "goes above": "gt", "is above": "gt", "rises above": "gt",
+    "greater than or equal to": "ge", "more than or equal to": "ge", "higher than or equal to": "ge",
+    "equal to or greater than": "ge", "equal to or more than": "ge", "equal to or higher than": "ge",
+    "at or above": "ge", "a minimum of": "ge",
+    "less than or equal to": "le", "lower than or equal to": "le", "equal to or less than": "le",
+    "equal to or lower than": "le", "at or below": "le", "a maximum of": "le",
+    "does not exceed": "le", "doesn't exceed": "le", "not exceed": "le", "never exceeds": "le",
+    "not exceeding": "le", "does not go above": "le", "doesn't go above": "le",
+    "does not drop below": "ge", "doesn't drop below": "ge", "never drops below": "ge", "not dropping below": "ge",
+})
+# "not above 20" -> le 20, "no lower than 55" -> ge 55 (thresholds only: comparatives live in COMPARATIVES).
+for _code, _phrases in _NEGATABLE.items():
+    for _p in _phrases:
+        if _p in COMPARATOR_PHRASES:
+            for _neg in ("not", "no") if _p.endswith("than") else ("not",):
+                COMPARATOR_PHRASES.setdefault(f"{_neg} {_p}", "le" if _code == "gt" else "ge")
 COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or greater": "ge", "or over": "ge",
                       "or less": "le", "or lower": "le", "or below": "le", "or under": "le", "and up": "ge",
                       "and above": "ge", "and below": "le"}
@@ -234,6 +300,33 @@ LEAD_PHRASES = (
     "end at", "end up at", "end with", "end by visiting", "end", "stop at", "wrap up at", "conclude at",
     "once you have visited", "once you've visited", "after visiting", "after going to", "after checking",
     "after you visit", "after you check",
+    # other politeness and framing: "your job is to", "i'd love it if you could", "it would be great if you could"
+    "your job is to", "your task is to", "your mission is to", "your goal is to", "your assignment is to",
+    "the job is to", "the task is to", "the goal is to", "the plan is to", "the mission is to",
+    "i'd love it if you could", "i would love it if you could", "i'd love it if you would", "i'd love for you to",
+    "i would love for you to", "i'd love you to", "i would love you to", "it would be great if you could",
+    "it'd be great if you could", "it would be nice if you could", "it would help if you could",
+    "i'd appreciate it if you could", "i would appreciate it if you could", "i'd be grateful if you could",
+    "if you could", "if you would", "would you be able to", "are you able to", "do me a favour and",
+    "do me a favor and", "i'd ask you to", "i ask you to", "you'll need to", "you will need to", "you are to",
+    "you're to", "you ought to", "we'll", "we will", "let us", "it's time to", "time to", "i'd like for you to",
+    # sequencing openers and closers: "to kick things off", "once you're done there", "wrap up with"
+    "to kick things off", "to kick off", "kick things off at", "kick things off with", "kick off at",
+    "kick off with", "first things first", "first up", "first off", "next up", "last but not least",
+    "start off with", "start off by visiting", "start off by going to", "to start off", "to finish",
+    "to finish off", "to finish up", "to wrap up", "to wrap things up", "to end", "wrap up with",
+    "wrap up by visiting", "wrap things up at", "wrap things up with", "round off with", "round off at",
+    "round things off at", "round things off with", "finish off at", "finish off with", "end off at",
+    "wind up at", "once you're done there", "once you are done there", "once you're done", "once you are done",
+    "when you're done there", "when you are done there", "when you're done", "when you are done",
+    "once you're finished", "once you are finished", "when you're finished", "when you are finished",
+    "once done", "once finished", "once that's done", "once that is done", "when that's done",
+    "when that is done", "after that's done", "after that is done", "after you've done that",
+    "after you have done that", "having done that", "with that done", "that done", "after you're done there",
+    "after you are done there",
+    *(f"{d}{o} {n} {v}" for d in ("your ", "the ", "our ", "") for o in ("first", "next", "second", "third", "final", "last")
+      for n in ("stop", "destination", "target", "goal", "waypoint", "port of call")
+      for v in ("is", "should be", "will be", "must be", "has to be")),
 )
 VERBS = (
     "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
@@ -243,13 +336,24 @@ VERBS = (
     "check on", "check out", "inspect", "inspecting", "examine", "look at", "approach", "reach", "reaching",
     "see", "seeing", "stop by", "swing by", "drop by", "pass by", "pay a visit to", "go and see", "go see",
     "go and check", "tour", "roll", "fly", "steer",
+    "pop", "nip", "hop", "dash", "zip", "scoot", "wander", "stroll", "swing", "head on", "make a stop",
+    "make a quick stop", "stop off", "stop in", "call in", "drop in on", "drop in", "look in on", "pass",
+    "go past", "make for", "aim for", "track down", "seek out", "hunt down", "hunt for", "set off", "get yourself",
+    "take yourself", "go visit", "go find", "go check", "go inspect", "arrive", "end up", "reach for",
 )
-VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "directly", "quickly", "right")
-VERB_PREPOSITIONS = ("to", "towards", "toward", "into", "for", "at", "by", "onto")
+VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "directly", "quickly", "right", "on",
+                  "along", "round", "past")
+VERB_PREPOSITIONS = ("to", "towards", "toward", "into", "for", "at", "by", "onto", "past")
 TRAILING_FILLERS = (
     "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
     "thank you", "then", "for me", "if you can", "if possible", "nearby", "next", "also", "straight away",
     "right away", "as soon as possible", "asap", "at the end", "at the start", "at the beginning",
+    "of all", "of them all", "of all of them", "among them", "overall",
+    # "X comes first, then Y", "X is your last stop"
+    *(f"{v} {o}" for v in ("comes", "goes", "is", "should come", "should be", "will be", "must be", "has to be")
+      for o in ("first", "next", "second", "third", "last", "at the end", "after that", "in the middle")),
+    *(f"{v} {d} {o} {n}" for v in ("is", "should be", "will be", "must be", "has to be") for d in ("your", "the")
+      for o in ("first", "next", "second", "third", "final", "last") for n in ("stop", "destination", "goal")),
 )
 
 
@@ -260,6 +364,8 @@ def is_modifier(word: str, next_word: str | None = None) -> bool:
     if word in INTENSIFIERS:
         return next_word is not None and (next_word in COLOURS or next_word.split("-")[0] in COLOURS)
     if word.endswith("ish") and word[:-3] in COLOURS:
+        return True
+    if "-" in word and word.replace("-", " ") in PARTICIPLE_STATES:  # "switched-on", "plugged-in"
         return True
     if "-" in word:
         parts = word.split("-")

@@ -67,7 +67,8 @@ READ_ALT = _alt(L.READING_NAMES)
 CMP_ALT = _alt(L.COMPARATOR_PHRASES)
 EXT_ALT = _alt(L.EXTREME_WORDS)
 UNIT = (
-    r"(?:°\s*[cf]\b|°|degrees?(?:\s+(?:celsius|centigrade|fahrenheit|c|f)\b)?|deg\b|celsius\b|centigrade\b"
+    r"(?:°\s*[cf]\b|°|degrees?(?:\s+(?:celsius|centigrade|fahrenheit|c|f)\b)?"
+    r"|degs?\b\.?(?:\s*(?:celsius|centigrade|fahrenheit|c|f)\b)?|celsius\b|centigrade\b"
     r"|fahrenheit\b|c\b|f\b|%|percent\b|per\s+cent\b)"
 )
 POST = r"(?:\s+(?P<post>or\s+(?:more|higher|above|greater|over|less|lower|below|under)|and\s+(?:up|above|below))\b)?"
@@ -78,8 +79,10 @@ NOT_LENGTH = (
 
 _NW_ALT = "|".join(sorted(list(L.NUMBER_WORDS) + ["hundred", "point"], key=len, reverse=True))
 _NW_SEQ = rf"(?:(?:a\s+)?(?:{_NW_ALT})(?:(?:\s+|-)(?:and\s+)?(?:{_NW_ALT}))*)"
-_NW_AFTER_CMP = re.compile(rf"(?P<pre>{CMP_ALT}\s+|{READ_ALT}\s+(?:of|is|at)\s+)(?P<nw>\b{_NW_SEQ}\b)")
-_NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|°|percent\b|per\s+cent\b|%))")
+_NW_AFTER_CMP = re.compile(
+    rf"(?P<pre>{CMP_ALT}\s+|{_alt(L.COMPARATIVES)}\s+than\s+|{READ_ALT}\s+(?:of|is|at)\s+)(?P<nw>\b{_NW_SEQ}\b)"
+)
+_NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|°|percent\b|per\s+cent\b|%))")
 
 _LOC_LEAD = (
     r"(?:(?:\b(?:which|that)\s+is\s+|\blocated\s+|\bpositioned\s+|\bsituated\s+|\bplaced\s+)?"
@@ -87,13 +90,20 @@ _LOC_LEAD = (
     r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
     r"(?:\b(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:\bof\s+)?"
 )
-_PAIR_PAREN = rf"[(\[]\s*(?:x\s*[=:]?\s*)?(?P<x1>{NUM})\s*[,;]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM})\s*[)\]]"
-_PAIR_XY = rf"\bx\s*(?:=|:|is)?\s*(?P<x2>{NUM})\s*(?:,|;|and)?\s*y\s*(?:=|:|is)?\s*(?P<y2>{NUM}){_NUM_END}"
+_METRES = r"(?:\s*(?:m|meters?|metres?)\b)?"  # "(3.5 m, 2 m)"
+_PAIR_PAREN = (
+    rf"[(\[]\s*(?:x\s*[=:]?\s*)?(?P<x1>{NUM}){_METRES}\s*[,;|/]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM}){_METRES}\s*[)\]]"
+)
+_AXIS = r"(?:[\s-]*(?:coordinate|coord|position|value)s?)?\s*(?:=|:|is|of)?\s*"  # "x=", "x: ", "x coordinate of "
+_PAIR_XY = (
+    rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|and|,\s*and)?\s*(?:(?:the|an?)\s+)?"
+    rf"y{_AXIS}(?P<y2>{NUM}){_NUM_END}{_METRES}"
+)
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
 _LOC2 = re.compile(
     r"(?:\b(?:located|positioned|situated|placed)\s+)?\b(?:at|coordinates?|coords?|position|point|location)\s+"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
-    rf"(?P<x3>{NUM})\s*,\s*(?P<y3>{NUM}){_NUM_END}"
+    rf"(?P<x3>{NUM}){_NUM_END}{_METRES}\s*[,/|]\s*(?P<y3>{NUM}){_NUM_END}{_METRES}"
 )
 
 _S_LEAD = r"(?:\b(?:with|having|that\s+has|which\s+has|whose|where)\s+(?:(?:an?|the|its|their)\s+)?)?"
@@ -112,7 +122,14 @@ _SENS_RANGE = re.compile(
 )
 _DECIMAL_COMMA = re.compile(r"(?P<k>⟪[a-z]+⟫)\s*(?P<rest>,\d+)")
 _COMPARATIVE = re.compile(
-    rf"\b(?P<adj>{_alt(L.COMPARATIVES)})\s+than\s+(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?"
+    rf"(?:\b(?P<neg>no|not|never|not\s+any)\s+)?\b(?P<adj>{_alt(L.COMPARATIVES)})\s+than\s+(?P<num>{NUM}){_NUM_END}"
+    rf"\s*(?P<unit>{UNIT})?"
+)
+# A verb left between a noun and its cut-out sensor phrase: "the samovar running (hotter than 60 C)".
+_VERB_BEFORE_SENSOR = re.compile(
+    r"\b(?:(?:that|which|who)\s+)?(?:(?:is|are)\s+)?(?:currently\s+)?"
+    r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
+    r"|operates|kept|set|heated|cooled|holding|holds|staying|stays)\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -152,7 +169,22 @@ _FREE = re.compile(
     r"|\bas\s+(?:efficiently|quickly)\s+as\s+possible"
     r"|\b(?:i\s+)?(?:do\s+not|don't)\s+care\s+(?:about|for)\s+the\s+order"
     r"|\bwhichever\s+order\s+(?:you\s+(?:like|want|prefer)|is\s+(?:quickest|fastest|shortest|best|easiest))"
+    # "the order is your call", "the sequence is entirely up to you", "the order is flexible"
+    r"|\b(?:the\s+)?(?:visiting\s+)?(?:order|sequence)\s+(?:is|'s)\s+(?:entirely\s+|completely\s+|totally\s+|really\s+)?"
+    r"(?:your\s+(?:call|choice|decision)|up\s+to\s+you|yours\s+to\s+(?:choose|decide|pick)|flexible|free|irrelevant"
+    r"|unimportant|open)"
+    r"|\b(?:the\s+)?(?:visiting\s+)?(?:order|sequence)\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+"
+    r"(?:matter|important|relevant)"
+    # "you can pick the order", "feel free to choose the order", "choose the order yourself"
+    r"|\b(?:you\s+(?:can|may|could|get\s+to|are\s+free\s+to|should)\s+|feel\s+free\s+to\s+)?"
+    r"(?:choose|pick|decide(?:\s+on)?|set)\s+(?:the|your\s+own)\s+(?:order|sequence)(?:\s+yourself)?"
+    r"|\b(?:in\s+)?(?:any|whatever|whichever)\s+(?:order|sequence)\s+(?:you\s+see\s+fit|suits\s+you)"
+    r"|\b(?:in\s+)?(?:an?\s+)?(?:order|sequence)\s+of\s+your\s+(?:choice|choosing)"
+    r"|\b(?:i\s+)?(?:do\s+not|don't)\s+mind\s+(?:the|which|what)\s+(?:order|sequence)"
+    r"|\b(?:in\s+)?no\s+(?:specific|set|fixed|required|special)\s+(?:order|sequence)"
 )
+# "Before anything else, X": X comes first (not "X before Y").
+_FIRST_OF_ALL = re.compile(r"\bbefore\s+(?:you\s+do\s+)?(?:anything|everything|all)\s+else\b")
 
 _CONNECTORS = (
     "and then", "and finally", "and lastly", "and after that", "then", "after that", "afterwards", "afterward",
@@ -160,19 +192,18 @@ _CONNECTORS = (
     "before", "after", "subsequently",
 )
 _SPLIT = re.compile(
-    r"(?P<c>[,;:!?]|\.(?!\d)|\s&\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
+    r"(?P<c>[,;:!?()\[\]]|\.(?!\d)|\s&\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
 )
 _TOKEN = re.compile(r"⟪[a-z]+⟫|[^\W_]+(?:['\-][^\W_]+)*")
 SWAP_BACK = ("after", "but first", "before that")  # "X after Y": Y comes first
+APPOSITION = ("(", "[")  # "the desk (the oak one)": the bracketed phrase describes the previous goal
+LIST_SEPARATORS = (",", ")", "]")  # "the heater, the black one,": an apposition unless it clashes
 
 
 def _phrase_tuples(phrases) -> list[tuple[str, ...]]:
     return sorted({tuple(p.split()) for p in phrases}, key=len, reverse=True)
 
 
-_LEADS = _phrase_tuples(L.LEAD_PHRASES)
-_VERBS = _phrase_tuples(L.VERBS)
-_TRAILS = _phrase_tuples(L.TRAILING_FILLERS)
 _RELS = sorted(((tuple(k.split()), v) for k, v in L.RELATION_PHRASES.items()), key=lambda kv: -len(kv[0]))
 _ROOM_PREPS = frozenset({"in", "inside", "within", "into", "inside of"})
 _DANGLING = frozenset(
@@ -318,7 +349,11 @@ def _cut(s: str, marks: _Marks) -> str:
 
     def comparative(m: re.Match) -> str:
         rd, sign = L.COMPARATIVES[re.sub(r"\s+", " ", m.group("adj"))]
-        c = _sensor(rd, "gt" if sign > 0 else "lt", m.group("num"), m.group("unit"), m.group(0))
+        if m.group("neg"):  # "no warmer than 30 degrees": at most 30
+            code = "le" if sign > 0 else "ge"
+        else:
+            code = "gt" if sign > 0 else "lt"
+        c = _sensor(rd, code, m.group("num"), m.group("unit"), m.group(0))
         return marks.add(m.group(0), sensor=c)
 
     def superlative_reading(m: re.Match) -> str:
@@ -358,6 +393,7 @@ def _cut(s: str, marks: _Marks) -> str:
     s = _SENS_B.sub(with_reading, s)
     s = _SENS_C.sub(bare, s)
     s = _SUPER_ADJ.sub(superlative_adj, s)
+    s = _VERB_BEFORE_SENSOR.sub(lambda m: "" if m.group("k") in marks.sensors else m.group(0), s)
 
     # What is left of a number-bearing phrase could not be read.
     for rx, what in ((_BAD_AFTER_READING, "a sensor value"), (_BAD_BEFORE_UNIT, "a sensor value")):
@@ -383,21 +419,30 @@ def _cut(s: str, marks: _Marks) -> str:
 
 @dataclasses.dataclass
 class _Node:
-    """A noun phrase under construction: words plus relations to anchor nodes."""
+    """A noun phrase under construction: words plus relations to anchor nodes.
+
+    states: attributes written after the noun ("that is switched on", "which is red", "made of oak").
+    """
 
     words: list[str]
     relations: list[tuple[str, _Node]] = dataclasses.field(default_factory=list)
+    states: list[str] = dataclasses.field(default_factory=list)
 
     @property
     def pronoun(self) -> bool:
         return bool(self.words) and all(w in L.PRONOUN_ANCHORS for w in self.words)
+
+    def add_states(self, attrs) -> None:
+        self.states += [a for a in attrs if a not in self.states]
 
     def target(self, antecedent: Target | None, depth: int = 0) -> Target:
         if self.pronoun and antecedent is not None:
             base = dataclasses.replace(antecedent, relations=())
         else:
             attrs, head = split_noun_phrase(self.words)
-            base = Target(" ".join(self.words), head, attrs)
+            extra = tuple(a for a in self.states if a not in attrs)
+            phrase = " ".join((*extra, *self.words))  # "switched on lamp": attributes first, as the generator writes
+            base = Target(phrase, head, attrs + extra)
         # A pronoun anchor refers to the previous goal; inside a nested phrase ("the desk, which has a lamp
         # on it") or with no previous goal it refers to the phrase itself, and adds nothing.
         rels = tuple(Relation(t, n.target(antecedent, depth + 1)) for t, n in self.relations
@@ -412,21 +457,30 @@ class _Piece:
     locations: list[Location] = dataclasses.field(default_factory=list)
     sensors: list[SensorConstraint] = dataclasses.field(default_factory=list)
     relations: list[tuple[str, _Node]] = dataclasses.field(default_factory=list)
-    attrs_only: list[str] = dataclasses.field(default_factory=list)
+    attrs_only: list[str] = dataclasses.field(default_factory=list)  # "the big," describes the next goal
+    attrs_after: list[str] = dataclasses.field(default_factory=list)  # ", which is on," describes the previous one
     connector: str = ""
     texts: list[str] = dataclasses.field(default_factory=list)
     ellipsis: bool = False  # "the coldest one": the head is the previous goal's
+    led: bool = False  # a verb or politeness phrase opened the segment ("visit the blue one")
 
     @property
     def empty(self) -> bool:
-        return not (self.room or self.locations or self.sensors or self.relations or self.attrs_only)
+        return not (self.room or self.locations or self.sensors or self.relations or self.attrs_only or self.attrs_after)
+
+
+def _state_name(word: str) -> str:
+    """'switched-on' -> 'switched on' (a hyphenated state is the same attribute); other words unchanged."""
+    spaced = word.replace("-", " ")
+    return L.STATE_PHRASES[spaced] if "-" in word and spaced in L.PARTICIPLE_STATES else word
 
 
 def split_noun_phrase(words: list[str] | tuple[str, ...]) -> tuple[tuple[str, ...], str]:
     """('grey', 'fabric', 'coffee', 'table') -> (('grey', 'fabric'), 'coffee table').
 
-    Leading descriptive words are attributes (an intensifier joins its colour: 'dark green'); the
-    rest is the head, which keeps at least the last word, so unseen compounds stay whole.
+    Leading descriptive words are attributes (an intensifier joins its colour: 'dark green'; a hyphenated
+    state is spaced: 'switched-on' -> 'switched on'); the rest is the head, which keeps at least the last
+    word, so unseen compounds stay whole.
     """
     words = list(words)
     k = 0
@@ -437,19 +491,36 @@ def split_noun_phrase(words: list[str] | tuple[str, ...]) -> tuple[tuple[str, ..
         if attrs and attrs[-1] in L.INTENSIFIERS:
             attrs[-1] = f"{attrs[-1]} {w}"
         else:
-            attrs.append(w)
+            attrs.append(_state_name(w))
     return tuple(attrs), " ".join(words[k:])
 
 
-def _strip_phrases(tokens: list[str], phrases, at_start: bool = True) -> tuple[list[str], bool]:
-    for p in phrases:
+def _phrase_index(phrases, at_start: bool) -> dict[str, list[tuple[str, ...]]]:
+    """Phrases keyed by their first (at_start) or last word, longest first within a key."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in _phrase_tuples(phrases):
+        out.setdefault(p[0] if at_start else p[-1], []).append(p)
+    return out
+
+
+_LEADS = _phrase_index(L.LEAD_PHRASES, True)
+_VERBS = _phrase_index(L.VERBS, True)
+_TRAILS = _phrase_index(L.TRAILING_FILLERS, False)
+
+
+def _strip_phrases(tokens: list[str], index: dict, at_start: bool = True) -> tuple[list[str], bool]:
+    if not tokens:
+        return tokens, False
+    for p in index.get(tokens[0] if at_start else tokens[-1], ()):
         n = len(p)
         if len(tokens) >= n and (tuple(tokens[:n]) if at_start else tuple(tokens[-n:])) == p:
             return (tokens[n:] if at_start else tokens[:-n]), True
     return tokens, False
 
 
-def _strip_leaders(tokens: list[str]) -> list[str]:
+def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
+    """Drops politeness, verbs and order words in front and fillers behind; also says whether any led."""
+    n0 = len(tokens)
     changed = True
     while changed and tokens:
         tokens, changed = _strip_phrases(tokens, _LEADS)
@@ -471,10 +542,11 @@ def _strip_leaders(tokens: list[str]) -> list[str]:
             if all(w.isalpha() and not L.is_modifier(w) and _relation_at(before, i) is None for i, w in enumerate(before)):
                 tokens = tokens[k:]
             break
+    led = len(tokens) < n0
     changed = True
     while changed and tokens:
         tokens, changed = _strip_phrases(tokens, _TRAILS, at_start=False)
-    return tokens
+    return tokens, led
 
 
 def _relation_at(tokens: list[str], i: int) -> tuple[str, int] | None:
@@ -500,6 +572,84 @@ def _boundary_at(tokens: list[str], i: int) -> tuple[str, int, bool] | None:
     return r[0], j - i + r[1], tokens[j] in _ROOM_PREPS and r[1] <= 2
 
 
+_STATES = sorted(((tuple(k.split()), v) for k, v in L.STATE_PHRASES.items()), key=lambda kv: -len(kv[0]))
+_CLAUSE_END = frozenset("and or but yet not".split()) | L.RELATIVE_PRONOUNS | L.RELATIVE_CONTRACTED
+
+
+def _np_end(tokens: list[str], k: int) -> bool:
+    """Nothing more of this noun phrase follows tokens[k-1]: the end, a conjunction, a relation or a clause."""
+    return k >= len(tokens) or tokens[k] in _CLAUSE_END or _boundary_at(tokens, k) is not None
+
+
+def _state_at(tokens: list[str], j: int) -> tuple[str, str, int] | None:
+    """(as written, attribute, tokens used) when a state phrase starts at tokens[j] ('switched on', 'switched-on')."""
+    if j < len(tokens) and "-" in tokens[j] and tokens[j].replace("-", " ") in L.PARTICIPLE_STATES:
+        written = tokens[j].replace("-", " ")
+        return written, L.STATE_PHRASES[written], 1
+    for phrase, attr in _STATES:
+        if tuple(tokens[j : j + len(phrase)]) == phrase:
+            return " ".join(phrase), attr, len(phrase)
+    return None
+
+
+def _post_attrs_at(tokens: list[str], i: int) -> tuple[list[str], int] | None:
+    """Attributes written after a noun, from tokens[i]: (attributes, tokens used) or None.
+
+    A relative clause ("that is switched on", "which is dark green", "that's open", "which is not lit", "that is
+    made of oak") or a bare participle ("switched on", "unplugged"). What follows must end the noun phrase, so
+    "that is on the table" is a relation and "that has red cushions" a 'with' anchor, not attributes.
+    """
+    n = len(tokens)
+    j, clause, negated = i, False, False
+    if j < n and tokens[j] in L.RELATIVE_PRONOUNS:
+        j, clause = j + 1, True
+    elif j < n and tokens[j] in L.RELATIVE_CONTRACTED:
+        j, clause = j + 1, True
+    start = j
+    while j < n and j - start < 4 and (tokens[j] in L.COPULA_WORDS or tokens[j] in L.NEGATED_COPULAS):
+        negated = negated or tokens[j] in L.NEGATED_COPULAS
+        j, clause = j + 1, True
+    if j >= n:
+        return None
+    made = next((m for m in L.MADE_OF if tuple(tokens[j : j + len(m)]) == m), None)
+    if made:
+        j += len(made)
+    else:
+        st = _state_at(tokens, j)
+        if st is not None:
+            written, attr, used = st
+            if negated:
+                attr = L.STATE_OPPOSITES.get(attr)
+            if attr is None or not (clause or written in L.PARTICIPLE_STATES) or not _np_end(tokens, j + used):
+                return None
+            return [attr], j + used - i
+        if not clause or negated:
+            return None
+    k = j
+    while k < n and L.is_modifier(tokens[k], tokens[k + 1] if k + 1 < n else None):
+        k += 1
+    if k == j or not _np_end(tokens, k):
+        return None
+    return list(split_noun_phrase([*tokens[j:k], "x"])[0]), k - i
+
+
+def _join_prenominal_states(tokens: list[str]) -> list[str]:
+    """'the switched on lamp' -> 'the switched-on lamp': a two-word state before a noun is one modifier."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        st = _state_at(tokens, i)
+        if (st is not None and st[2] == 2 and st[0] in L.PARTICIPLE_STATES
+                and (not out or out[-1] in L.DETERMINERS or L.is_modifier(out[-1], tokens[i]))
+                and not _np_end(tokens, i + 2)):
+            out.append("-".join(tokens[i : i + 2]))
+            i += 2
+        else:
+            out.append(tokens[i])
+            i += 1
+    return out
+
+
 def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
     while i < len(tokens) and tokens[i] in L.DETERMINERS:
         i += 1
@@ -509,14 +659,15 @@ def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
             i += 1
     words = []
     while i < len(tokens):
-        if words and _boundary_at(tokens, i) is not None:
+        if words and (_post_attrs_at(tokens, i) is not None or _boundary_at(tokens, i) is not None):
             break
         if not words and _relation_at(tokens, i) is not None:
             break
         words.append(tokens[i])
         i += 1
-    # Relative-clause words left before a cut-out sensor phrase: "the fridge that is (colder than 5 C)".
-    while len(words) > 1 and words[-1] in _DANGLING:
+    # Relative-clause words left before a cut-out sensor phrase: "the fridge that is (colder than 5 C)",
+    # "the appliance that is the (warmest)".
+    while len(words) > 1 and (words[-1] in _DANGLING or words[-1] in L.DETERMINERS):
         words.pop()
     return words, i
 
@@ -525,6 +676,9 @@ def _room_name(words: list[str]) -> str:
     if len(words) >= 2 and words[-1] in L.ROOM_SUFFIXES and words[-1] != "room":
         words = words[:-1]
     return " ".join(words)
+
+
+_CONTINUATION = frozenset("which that who where whose".split()) | L.RELATIVE_CONTRACTED
 
 
 def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
@@ -539,19 +693,21 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
                 piece.sensors.extend(marks.sensors[t])
         else:
             tokens.append(t)
-    tokens = _strip_leaders(tokens)
-    continuation = bool(tokens) and tokens[0] in ("which", "that", "who", "where", "whose")
-    if continuation:  # ", which should be hotter than 100 degrees": constraints of the previous goal
-        j = 0
-        while j < len(tokens) and _relation_at(tokens, j) is None:
-            j += 1
-        tokens = tokens[j:]
-    words, i = _read_np(tokens, 0)
+    tokens, piece.led = _strip_leaders(tokens)
+    tokens = _join_prenominal_states(tokens)
+    # ", which should be hotter than 100 degrees", ", which is on,": constraints of the previous goal.
+    continuation = bool(tokens) and tokens[0] in _CONTINUATION
+    words, i = ([], 0) if continuation else _read_np(tokens, 0)
     top = _Node(words)
     current = top
     while i < len(tokens):
+        post = _post_attrs_at(tokens, i)
+        if post is not None:  # "that is switched on", "which is red": the nearest noun's attributes
+            current.add_states(post[0])
+            i += post[1]
+            continue
         b = _boundary_at(tokens, i)
-        if b is None:  # cannot happen after _read_np, but never loop forever
+        if b is None:  # words of a clause that are neither attributes nor relations ("which should be")
             i += 1
             continue
         rtype, used, room_prep = b
@@ -566,20 +722,52 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
         current.relations.append((rtype, node))
         current = node
     if words and words[-1] in ("one", "ones") and (len(words) > 1 or piece.sensors or piece.locations or
-                                                      piece.room or top.relations):
+                                                      piece.room or top.relations or top.states):
         # "the coldest one", "the red one near the door": the head of the previous goal, elided.
         top.words = words[:-1]
         piece.node, piece.ellipsis = top, True
         return piece
     if not words or all(w in L.FILLER_NOUNS for w in words):
         piece.relations = top.relations
+        piece.attrs_after = top.states
     elif all(L.is_modifier(w, words[k + 1] if k + 1 < len(words) else "red") for k, w in enumerate(words)) and not (
-        top.relations or piece.room or piece.locations or piece.sensors
+        top.relations or top.states or piece.room or piece.locations or piece.sensors
     ):
         piece.attrs_only = list(words)  # "the big, red chair": "the big" describes the next goal
     else:
         piece.node = top
     return piece
+
+
+def _attr_kind(attr: str) -> str:
+    """What an attribute describes (colour, material, state, size), so 'the red chair, the blue one' lists two
+    chairs while 'the heater, the black one' describes one."""
+    last = attr.split()[-1]
+    if attr in _STATE_ATTRS:
+        return "state"
+    if last in L.COLOURS or last.split("-")[-1] in L.COLOURS or (last.endswith("ish") and last[:-3] in L.COLOURS):
+        return "colour"
+    if last in L.MATERIALS:
+        return "material"
+    if last in L.SIZE_WORDS:
+        return "size"
+    return "other: " + attr
+
+
+_STATE_ATTRS = frozenset(L.STATE_PHRASES.values())
+
+
+def _clashes(goal: _Piece, extra: _Piece) -> bool:
+    """Whether an elided phrase after a comma ("the blue one") names another object than the goal before it."""
+    g, e = goal.node, extra.node
+    if (goal.room and extra.room) or (goal.locations and extra.locations):
+        return True
+    if {c.reading for c in goal.sensors} & {c.reading for c in extra.sensors}:
+        return True
+    if (goal.relations or g.relations) and (extra.relations or e.relations):
+        return True
+    kinds = {_attr_kind(a) for a in (*split_noun_phrase(g.words)[0], *g.states)}
+    return any(_attr_kind(a) in kinds for a in (*split_noun_phrase([*e.words, "x"])[0], *e.states))
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -590,7 +778,8 @@ def _normalise(text) -> str:
         raise ParseError(f"an instruction must be text, got {type(text).__name__}")
     if len(text) > MAX_CHARS:
         raise ParseError(f"the instruction is too long ({len(text)} characters; at most {MAX_CHARS})")
-    t = unicodedata.normalize("NFKC", text)
+    # Degree look-alikes that NFKC would turn into letters: masculine ordinal "º", ring above "˚".
+    t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
     t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
     t = re.sub(r"\s+", " ", t).strip()
@@ -607,6 +796,7 @@ def parse_instruction(text: str) -> TaskChain:
         raise ParseError(f"could not read the number starting '{m.group(0)}'")
     marks = _Marks()
     s = _number_words(s)
+    s = _FIRST_OF_ALL.sub("first", s)
     s = _cut(s, marks)
     order = "strict"
     if _FREE.search(s):
@@ -624,10 +814,18 @@ def parse_instruction(text: str) -> TaskChain:
         if p.node is None:
             if p.empty:
                 continue
+            if p.attrs_only and goals and p.connector in APPOSITION:  # "the heater (black)"
+                p.attrs_after, p.attrs_only = p.attrs_only, []
             if p.attrs_only or not goals:
                 pending = p if pending is None else _merge(pending, p)
             else:
                 _merge(goals[-1], p)
+            continue
+        if p.ellipsis and goals and pending is None and (
+            p.connector in APPOSITION or (p.connector in LIST_SEPARATORS and not p.led and not _clashes(goals[-1], p))
+        ):
+            # "the heater, the black one," / "the fern (the one by the window)": more about the same goal.
+            _merge(goals[-1], p)
             continue
         if pending is not None:
             p = _merge(p, pending, prefix=True)
@@ -686,7 +884,7 @@ def parse_instruction(text: str) -> TaskChain:
 
 
 def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
-    """Adds a noun-less piece's constraints to a goal piece (in place; returns it)."""
+    """Adds a noun-less piece's (or an apposition's) constraints to a goal piece (in place; returns it)."""
     into.room = into.room or extra.room
     into.locations += extra.locations
     into.sensors += extra.sensors
@@ -696,5 +894,14 @@ def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
             into.node.words = extra.attrs_only + into.node.words
         else:
             into.attrs_only = extra.attrs_only + into.attrs_only
+    if extra.attrs_after:
+        if into.node is not None:
+            into.node.add_states(extra.attrs_after)
+        else:
+            into.attrs_after += [a for a in extra.attrs_after if a not in into.attrs_after]
+    if extra.node is not None and into.node is not None:  # an apposition: "the black one near the door"
+        into.node.words = extra.node.words + into.node.words
+        into.node.add_states(extra.node.states)
+        into.node.relations += extra.node.relations
     into.texts = (extra.texts + into.texts) if prefix else (into.texts + extra.texts)
     return into

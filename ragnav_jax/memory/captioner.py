@@ -61,16 +61,45 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "laundry basket": ("laundry basket", "laundry hamper"),
     "towel radiator": ("towel radiator", "heated towel rail"),
     "kettle": ("kettle", "electric kettle"),
+    # unseen split (world.split=unseen)
+    "tumble dryer": ("tumble dryer", "clothes dryer"),
+    "fish tank": ("fish tank", "aquarium"),
+    "record player": ("record player", "turntable"),
+    "hi-fi speaker": ("hi-fi speaker", "loudspeaker"),
+    "mini-fridge": ("mini-fridge", "minibar"),
+    "crib": ("crib", "cot"),
+    "diaper pail": ("diaper pail", "nappy bin"),
+    "ping-pong table": ("ping-pong table", "table tennis table"),
+    "amplifier": ("amplifier", "amp"),
+    "drum kit": ("drum kit", "drum set"),
+    "game console": ("game console", "games console"),
+    "bean bag": ("bean bag", "beanbag"),
+    "lawn mower": ("lawn mower", "lawnmower"),
+    "stand mixer": ("stand mixer", "food mixer"),
+    "monstera": ("monstera", "cheese plant"),
+    "work light": ("work light", "work lamp"),
+    "air purifier": ("air purifier", "air cleaner"),
+    "chest freezer": ("chest freezer", "deep freezer"),
+    "shelf unit": ("shelf unit", "shelving unit"),
 }
 # Plausible detector confusions (category -> what it is sometimes taken for).
 CONFUSIONS: dict[str, str] = {
     "armchair": "chair", "office chair": "chair", "fern": "potted plant", "orchid": "potted plant",
     "kettle": "coffee machine", "dresser": "sideboard", "console table": "sideboard", "heater": "radiator",
     "towel radiator": "radiator", "desk": "kitchen table", "meeting table": "dining table", "globe": "floor lamp",
+    # unseen split
+    "cello": "guitar", "guitar": "cello", "amplifier": "hi-fi speaker", "peace lily": "spider plant",
+    "snake plant": "spider plant", "work light": "reading lamp", "arcade cabinet": "jukebox", "toolbox": "tool chest",
+    "craft table": "workbench", "dehumidifier": "air purifier", "mini-fridge": "chest freezer",
+    "chaise longue": "daybed", "bread maker": "toaster",
 }
-# Attribute keys that read as adjectives before the noun; others become trailing phrases.
-ADJECTIVE_KEYS = ("size", "condition", "style", "color", "pattern", "material")
-TRAILING = {"pot": "in a {} pot", "frame": "with a {} frame", "door": "with a {} door"}
+# Attribute keys that read as adjectives before the noun, in English adjective order; others become
+# trailing phrases ("state", of the unseen split, reads "a tumble dryer that is switched on").
+ADJECTIVE_KEYS = ("size", "condition", "style", "era", "finish", "color", "shade", "pattern", "material", "fabric")
+TRAILING = {
+    "pot": "in a {} pot", "frame": "with a {} frame", "door": "with a {} door", "planter": "in a {} planter",
+    "state": "that is {}",
+}
 SENSOR_TEXT = {
     "temperature_c": ("at about {:.0f} °C", 1.0),
     "ndvi": ("with NDVI {:.2f}", 0.02),
@@ -105,9 +134,10 @@ def find_words(needle: str, text: str) -> re.Match | None:
 @functools.cache
 def _surface_forms() -> tuple[tuple[str, str], ...]:
     """(surface form, category) pairs a template caption may use, longest first."""
-    from ragnav_jax.world.vocabulary import CATALOG, PLANTS
+    from ragnav_jax.world.vocabulary import CATALOG, PLANTS, PLANTS_UNSEEN, UNSEEN_CATALOG
 
-    pairs = {(c, c) for c in (*CATALOG, *PLANTS)} | {(f.lower(), c) for c, forms in SYNONYMS.items() for f in forms}
+    names = (*CATALOG, *PLANTS, *UNSEEN_CATALOG, *PLANTS_UNSEEN)
+    pairs = {(c, c) for c in names} | {(f.lower(), c) for c, forms in SYNONYMS.items() for f in forms}
     return tuple(sorted(pairs, key=lambda p: -len(p[0])))
 
 
@@ -169,6 +199,17 @@ def _phrase(rng, o: SceneObject, label: str, dist: float, noise: CaptionNoise) -
     return _article(text)
 
 
+def describe_object(rng, o: SceneObject, dist: float, noise: CaptionNoise) -> tuple[str, str]:
+    """(name, phrase) of one detection at `dist` metres: a rare confusion, a synonym, the attributes kept,
+    readings within 3 m ('couch', 'a grey fabric couch')."""
+    cat = o.category
+    if cat in CONFUSIONS and rng.uniform() < noise.confusion:
+        cat = CONFUSIONS[cat]
+    forms = SYNONYMS.get(cat, (cat,))
+    label = forms[0] if len(forms) == 1 or rng.uniform() >= noise.synonym else forms[int(rng.integers(1, len(forms)))]
+    return label, _phrase(rng, o, label, dist, noise)
+
+
 def _join(rng, items: Sequence[str]) -> str:
     if len(items) == 1:
         return items[0]
@@ -196,14 +237,9 @@ def template_caption(scene: Scene, obs: NodeObservation, node: int, seed: int, n
         return Caption(EMPTY[int(rng.integers(len(EMPTY)))], ())
     labels, phrases = [], []
     for oi, d in kept:
-        o = scene.objects[oi]
-        cat = o.category
-        if cat in CONFUSIONS and rng.uniform() < noise.confusion:
-            cat = CONFUSIONS[cat]
-        forms = SYNONYMS.get(cat, (cat,))
-        label = forms[0] if len(forms) == 1 or rng.uniform() >= noise.synonym else forms[int(rng.integers(1, len(forms)))]
+        label, phrase = describe_object(rng, scene.objects[oi], d, noise)
         labels.append(label)
-        phrases.append(_phrase(rng, o, label, d, noise))
+        phrases.append(phrase)
     order = list(range(len(phrases)))
     if rng.uniform() < 0.4:  # otherwise nearest first
         rng.shuffle(order)

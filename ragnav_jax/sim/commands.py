@@ -31,13 +31,23 @@ def copy_scenes(files: list[Path], dest: Path) -> None:
         target.write_bytes(data)
 
 
-def scene_row(scene, result, cov) -> dict:
+def scene_row(scene, result, cov, robot_radius: float = 0.0) -> dict:
+    """One scene's summary row. Rooms count as entered when the true trajectory's centre passed at least
+    `robot_radius` inside them; `rooms_not_entered` and `rooms_objects_unseen` list room ids."""
+    from ragnav_jax.sim.coverage import room_objects_unseen, rooms_entered
+
     vis = result.stream.visible
+    entered = rooms_entered(scene, result.true_pose, margin=robot_radius)  # (R,)
+    unseen = room_objects_unseen(scene, vis)  # (R,)
     return {
         "scene": scene.name,
         "coverage": round(cov.fraction, 4),
         "reachable_area_m2": round(cov.reachable_area, 2),
         "covered_area_m2": round(cov.covered_area, 2),
+        "rooms": len(scene.rooms),
+        "rooms_entered": int(entered.sum()),
+        "rooms_entered_share": round(float(entered.mean()) if entered.size else 1.0, 4),
+        "rooms_not_entered": [r.id for r, e in zip(scene.rooms, entered) if not e],
         "path_length_m": round(result.path_length, 2),
         "steps": result.steps,
         "sim_time_s": round(result.steps * result.control_dt, 1),
@@ -45,6 +55,7 @@ def scene_row(scene, result, cov) -> dict:
         "finished": result.finished,
         "objects": len(scene.objects),
         "objects_seen": round(float(vis.any(0).mean()) if vis.shape[1] else 1.0, 4),
+        "rooms_objects_unseen": [r.id for r, u in zip(scene.rooms, unseen) if u],
         "targets": result.plans,
         "targets_given_up": result.given_up,
         "max_penetration_m": round(result.max_penetration, 4),
@@ -82,12 +93,12 @@ def cmd_explore(args, cfg) -> int:
         (stage / "maps").mkdir(parents=True, exist_ok=True)
         with open(stage / "maps" / f"{scene.name}.npz", "wb") as f:
             np.savez_compressed(f, covered=cov.covered, reachable=cov.reachable, **maps)
-        row = scene_row(scene, r, cov)
+        row = scene_row(scene, r, cov, cfg.sim.robot_radius)
         rows.append(row)
         if args.plots:
             save_exploration(scene, {**maps}, stage / "plots" / f"{scene.name}.png",
                              title=f"{scene.name}: coverage {row['coverage']:.3f}, path {row['path_length_m']:.0f} m")
-    write_table(rows, stage / "summary_table")
+    write_table([{k: " ".join(v) if isinstance(v, list) else v for k, v in r.items()} for r in rows], stage / "summary_table")
     reach = sum(r["reachable_area_m2"] for r in rows)
     summary = {
         "num_scenes": len(rows),
@@ -97,7 +108,11 @@ def cmd_explore(args, cfg) -> int:
         "path_length_m": round(sum(r["path_length_m"] for r in rows), 2),
         "mean_path_length_m": round(float(np.mean([r["path_length_m"] for r in rows])), 2),
         "steps": int(sum(r["steps"] for r in rows)),
+        "rooms_entered_share": round(float(np.mean([r["rooms_entered_share"] for r in rows])), 4),
+        "rooms_entered_share_min": min(r["rooms_entered_share"] for r in rows),
+        "rooms_not_entered_count": sum(len(r["rooms_not_entered"]) for r in rows),
         "objects_seen": round(float(np.mean([r["objects_seen"] for r in rows])), 4),
+        "rooms_objects_unseen_count": sum(len(r["rooms_objects_unseen"]) for r in rows),
         "max_penetration_m": max(r["max_penetration_m"] for r in rows),
         "all_finished": all(r["finished"] for r in rows),
         "control_hz": round(1.0 / (cfg.sim.timestep * cfg.sim.substeps), 3),
@@ -109,7 +124,8 @@ def cmd_explore(args, cfg) -> int:
     print((stage / "summary_table.md").read_text())
     print(
         f"explored {len(rows)} scenes in {seconds:.0f} s: coverage mean {summary['coverage']:.3f} "
-        f"(min {summary['coverage_min']:.3f}), streams in {stage / 'streams'}"
+        f"(min {summary['coverage_min']:.3f}), rooms entered mean {summary['rooms_entered_share']:.3f} "
+        f"({summary['rooms_not_entered_count']} never entered), streams in {stage / 'streams'}"
     )
     return 0
 

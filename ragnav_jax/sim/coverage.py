@@ -82,3 +82,48 @@ def coverage(scene: Scene, pose: np.ndarray, ranges: np.ndarray, angles: np.ndar
     if pose.shape[0]:
         covered[reach] = scan_cover(xs[reach], ys[reach], pose, ranges, angles)
     return Coverage(reachable=reach, covered=covered, grid=grid)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Rooms entered and rooms whose objects were seen: lidar coverage can read 1.0 while rooms were only
+# scanned through their doorways, so the summary reports both next to it.
+
+
+def densify(xy: np.ndarray, step: float) -> np.ndarray:
+    """(M, 2) points along the polyline xy (T, 2), consecutive ones at most `step` metres apart; the
+    vertices are kept (M = T when T < 2)."""
+    xy = np.asarray(xy, float)[:, :2]
+    if xy.shape[0] < 2:
+        return xy
+    seg = np.diff(xy, axis=0)  # (T-1, 2)
+    n = np.maximum(np.ceil(np.hypot(seg[:, 0], seg[:, 1]) / step).astype(int), 1)  # samples per segment
+    idx = np.repeat(np.arange(seg.shape[0]), n)
+    frac = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n, n)
+    return np.concatenate([xy[idx] + frac[:, None] * seg[idx], xy[-1:]])
+
+
+def rooms_entered(scene: Scene, pose: np.ndarray, margin: float = 0.0, step: float = 0.05) -> np.ndarray:
+    """(R,) bool in `scene.rooms` order: the true trajectory passed at least `margin` metres inside room r.
+
+    pose: (T, 2+) true x, y (further columns such as yaw are ignored) of consecutive records; the
+    straight path between two records is sampled every `step` metres, so a room crossed between
+    records counts as entered.
+    """
+    pts = densify(pose, step)  # (M, 2)
+    out = np.zeros(len(scene.rooms), bool)
+    for r, room in enumerate(scene.rooms):
+        inside = (pts[:, 0] >= room.min[0] + margin) & (pts[:, 0] <= room.max[0] - margin)
+        inside &= (pts[:, 1] >= room.min[1] + margin) & (pts[:, 1] <= room.max[1] - margin)
+        out[r] = bool(inside.any())
+    return out
+
+
+def room_objects_unseen(scene: Scene, visible: np.ndarray) -> np.ndarray:
+    """(R,) bool in `scene.rooms` order: room r holds objects and the camera saw none of them.
+
+    visible: (T, O) bool camera visibility per record, columns in `scene.objects` order.
+    """
+    R, O = len(scene.rooms), len(scene.objects)
+    seen = np.asarray(visible, bool).reshape(-1, O).any(0)  # (O,)
+    held = np.array([[o.room == r.id for o in scene.objects] for r in scene.rooms], bool).reshape(R, O)
+    return held.any(1) & ~(held & seen[None, :]).any(1)

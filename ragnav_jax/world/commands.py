@@ -65,10 +65,15 @@ def cmd_generate(args, cfg) -> int:
 
 
 def cmd_validate(args, cfg) -> int:
+    """Checks scene files; reachability problems for a robot of `sim.robot_radius` are warnings on
+    stderr (one line each), errors only with --strict."""
+    import sys
+
     from ragnav_jax.errors import SceneError
+    from ragnav_jax.world.blockers import reach_warnings
     from ragnav_jax.world.scene import load_scene, scene_files
 
-    bad = 0
+    bad = warned = 0
     for src in args.paths:
         for f in scene_files(src):
             try:
@@ -77,9 +82,32 @@ def cmd_validate(args, cfg) -> int:
             except SceneError as e:
                 print(f"FAIL {e}")
                 bad += 1
+                continue
+            for line in reach_warnings(s, cfg.sim.robot_radius):
+                print(f"warning: {f}: {line}", file=sys.stderr)
+                warned += 1
     if bad:
         raise UserError(f"{bad} invalid scene file(s)")
+    if warned and args.strict:
+        raise UserError(f"{warned} reachability warning(s) (--strict)")
     return 0
+
+
+class _PathsAndOverrides(argparse.Action):
+    """Splits validate's positionals into scene paths and KEY=VALUE config overrides.
+
+    The common parser's `overrides` positional comes first and takes all items but the last; this
+    action (run for the last) sorts them all again: an item with '=' that is not an existing path is
+    an override."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        items = [*(getattr(namespace, "overrides", None) or []), *values]
+        override = [("=" in x and not Path(x).exists()) for x in items]
+        namespace.overrides = [x for x, o in zip(items, override) if o]
+        paths = [x for x, o in zip(items, override) if not o]
+        if not paths:
+            parser.error("the following arguments are required: PATH")
+        setattr(namespace, self.dest, paths)
 
 
 def cmd_show_scene(args, cfg) -> int:
@@ -102,9 +130,12 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--no-plots", dest="plots", action="store_false", help="skip floor-plan pictures")
     p.set_defaults(func=cmd_generate)
 
-    p = sub.add_parser("validate", parents=[common], help="validate scene files or folders")
-    p.add_argument("paths", nargs="+", metavar="PATH")
-    p.set_defaults(func=cmd_validate, overrides_allowed=False)
+    p = sub.add_parser(
+        "validate", parents=[common], help="validate scene files or folders; warn about unreachable rooms and objects"
+    )
+    p.add_argument("paths", nargs="+", metavar="PATH", action=_PathsAndOverrides)
+    p.add_argument("--strict", action="store_true", help="exit 2 on reachability warnings")
+    p.set_defaults(func=cmd_validate)
 
     p = sub.add_parser("show-scene", parents=[common], help="draw a scene's floor plan")
     p.add_argument("file")

@@ -6,6 +6,8 @@ of room sides minus door gaps. Furnishing: per-room-type groups with co-occurren
 `vocabulary.py`), placed by rejection sampling that keeps doors clear and, checked on a 0.1 m raster
 after every placement, every room and every object reachable from the start pose. Same-category
 distractors are guaranteed (instances differ in attributes, room, neighbours or sensor values).
+`world.split` picks the vocabulary: "seen" (the default; the original catalogue, unchanged) or "unseen"
+(other room types, categories and attribute kinds, including on/off, open/closed and empty/full states).
 
 The same (config, seed) gives byte-identical scene files: every random draw comes from a NumPy
 generator seeded by (seed, scene index), and numbers are rounded before writing.
@@ -23,7 +25,16 @@ from scipy import ndimage
 from ragnav_jax.config import WorldConfig
 from ragnav_jax.world import geometry
 from ragnav_jax.world.scene import Room, Scene, SceneObject, Start, Wall, scene_from_dict, scene_to_dict
-from ragnav_jax.world.vocabulary import CATALOG, GENERIC_GROUPS, PLANTS, ROOM_GROUPS, Entry, Group
+from ragnav_jax.world.vocabulary import (
+    CATALOG,
+    PLANTS,
+    Entry,
+    Group,
+    catalog_for,
+    generic_groups_for,
+    plants_for,
+    room_groups_for,
+)
 
 WALL_THICKNESS = 0.1
 WALL_HEIGHT = 2.5
@@ -210,6 +221,8 @@ class _Furnisher:
     rng: np.random.Generator
     scene: Scene  # rooms/walls/start filled, no objects yet
     doors: list[Door]
+    catalog: dict[str, Entry] = dataclasses.field(default_factory=lambda: CATALOG)  # of the world split
+    plants: tuple[str, ...] = PLANTS
     objects: list[SceneObject] = dataclasses.field(default_factory=list)
     counts: Counter = dataclasses.field(default_factory=Counter)
 
@@ -330,7 +343,7 @@ class _Furnisher:
         return x, y, h / 2, w, d, h
 
     def place(self, category: str, room: Room, relation: str | None = None, anchor=None, tries: int = 25):
-        entry = CATALOG[category]
+        entry = self.catalog[category]
         for _ in range(tries):
             pose = self._pose(entry, room, relation, anchor)
             if pose is None:
@@ -341,8 +354,10 @@ class _Furnisher:
                 continue
             attrs = self._attributes(category, entry)
             sensors = self._sensors(category, entry)
-            if category in PLANTS and "ndvi" in sensors:
+            if category in self.plants and "ndvi" in sensors:
                 attrs["condition"] = "healthy" if sensors["ndvi"] >= 0.6 else ("wilting" if sensors["ndvi"] < 0.3 else "fair")
+            if attrs.get("state") == "switched off" and "temperature_c" in sensors:
+                sensors["temperature_c"] = round(self.rng.uniform(18.0, 23.0), 1)  # off: room temperature
             self.counts[category] += 1
             obj = SceneObject(
                 id=f"{category.replace(' ', '_')}_{self.counts[category]}",
@@ -378,12 +393,12 @@ class _Furnisher:
         return n
 
 
-def _groups_for(room_type: str) -> tuple[Group, ...]:
-    return ROOM_GROUPS.get(room_type, GENERIC_GROUPS)
+def _groups_for(room_type: str, split: str = "seen") -> tuple[Group, ...]:
+    return room_groups_for(split).get(room_type, generic_groups_for(split))
 
 
 def furnish(rng, scene: Scene, doors: list[Door], cfg: WorldConfig) -> list[SceneObject]:
-    f = _Furnisher(rng, scene, doors)
+    f = _Furnisher(rng, scene, doors, catalog_for(cfg.split), plants_for(cfg.split))
     total_area = sum(r.area for r in scene.rooms)
     target = int(np.clip(round(total_area * rng.uniform(0.35, 0.6)), cfg.min_objects, cfg.max_objects))
     quotas = {r.id: max(2, round(target * r.area / total_area)) for r in scene.rooms}
@@ -398,7 +413,7 @@ def furnish(rng, scene: Scene, doors: list[Door], cfg: WorldConfig) -> list[Scen
             if have >= quotas[room.id] and any(failures[r.id] < 6 for r in rooms if r.id != room.id):
                 failures[room.id] += 0.5  # over quota: let other rooms catch up first
                 continue
-            groups = _groups_for(room.type)
+            groups = _groups_for(room.type, cfg.split)
             placed_cats = Counter(o.category for o in f.objects if o.room == room.id)
             # Prefer anchors the room does not have yet.
             weights = np.array([g.weight / (1 + 2 * placed_cats[g.anchor]) for g in groups])
@@ -416,7 +431,7 @@ def furnish(rng, scene: Scene, doors: list[Door], cfg: WorldConfig) -> list[Scen
         if not singles:
             break
         cat = str(rng.choice(singles))
-        rooms_ok = [r for r in rooms if any(g.anchor == cat for g in _groups_for(r.type))] or rooms
+        rooms_ok = [r for r in rooms if any(g.anchor == cat for g in _groups_for(r.type, cfg.split))] or rooms
         room = rooms_ok[int(rng.integers(len(rooms_ok)))]
         if len(f.objects) >= cfg.max_objects:
             # Replace-free strategy: drop the newest object that is not the only instance of its kind.

@@ -1,0 +1,116 @@
+"""Fitting the verifier's thresholds on the seen split only (`ragnav fit-verifier`).
+
+    entry = fit_verifier(cfg, embedder, scenes=8, seed=12345)    # {"params": ..., "fitted_on": ..., ...}
+
+Training data: houses drawn by the seen-split generator (`world.split=seen`, its own seed, never the
+evaluation houses), each object perceived a few times by the close-range captioner. Labels come from
+the seen generator's own vocabulary: a head noun names an object when `category_matches` says so
+(category, synonym or hypernym); an attribute is contradicted when the description says another option
+of the same attribute kind; a room phrase names the rooms of that type. Each threshold is the grid
+value with the best balanced accuracy. The unseen catalogue is never read (a test checks this).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import json
+from pathlib import Path
+
+import numpy as np
+
+from ragnav_jax.errors import UserError
+from ragnav_jax.evaluation.verify import FITTED_FORMAT, Verifier, VerifierParams, descriptors, said
+from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_matches
+
+GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
+GRID_MARGIN = np.round(np.arange(0.0, 0.41, 0.02), 2)
+
+
+def balanced_accuracy(pred: np.ndarray, label: np.ndarray) -> float:
+    """Mean of the true-positive and true-negative rates (0.5 for an empty class)."""
+    pos, neg = label.sum(), (~label).sum()
+    tpr = (pred & label).sum() / pos if pos else 0.5
+    tnr = (~pred & ~label).sum() / neg if neg else 0.5
+    return float((tpr + tnr) / 2)
+
+
+def _seen_scenes(cfg, scenes: int, seed: int):
+    from ragnav_jax.world.generator import generate_scene
+
+    if cfg.world.split != "seen":
+        raise UserError(f"world.split: fitting reads the seen split only (got '{cfg.world.split}')")
+    return [generate_scene(cfg.world, seed, i) for i in range(scenes)]
+
+
+def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 3):
+    """(name rows (n, 4): cosine, gap to the best, exact, label; attribute rows (n, 2): best cosine to a
+    descriptor, label; room rows (n, 2): gap to the best room, label) from seen-split houses."""
+    from ragnav_jax.world.vocabulary import catalog_for
+
+    catalog = catalog_for("seen")
+    v = Verifier.build(embedder, cfg, VerifierParams())
+    houses = _seen_scenes(cfg, scenes, seed)
+    head_rows, kind_rows, room_rows = [], [], []  # (features..., label)
+    for h, scene in enumerate(houses):
+        views = [v.perceptions_of(scene, f"fit-{seed}-{h}-{k}") for k in range(looks)]
+        vocab = sorted({p.name for ps in views for p in ps})
+        ps = views[0]
+        cats = sorted({o.category for o in scene.objects})
+        heads = sorted({x for c in cats for x in (c, *SYNONYMS.get(c, ()))} | {y for y, m in HYPERNYMS.items() if m & set(cats)})
+        names = [p.name for p in ps]
+        c = v.cos(heads, names)  # (H, O)
+        best = np.maximum(v.cos(heads, vocab).max(1), c.max(1))
+        for i, head in enumerate(heads):
+            for j, o in enumerate(scene.objects):
+                head_rows.append((c[i, j], best[i] - c[i, j], names[j] == head, category_matches(o.category, head)))
+        for o, p in zip(scene.objects, ps):
+            attrs = dict(o.attributes)
+            for kind, opts in catalog[o.category].attrs:
+                for w in opts:
+                    w = FRAMES.get(w, f"{w}-framed") if kind == "frame" else w
+                    if w == attrs.get(kind) or said(w, p.text):
+                        continue
+                    ds = [d for d in descriptors(p) if d != w]
+                    x = float(v.cos([w], ds).max()) if ds else -1.0
+                    kind_rows.append((x, kind in attrs and said(attrs[kind], p.text)))
+        rooms = {r.id: r for r in scene.rooms}
+        recorded = {k: [views[m][k].name for m in range(looks)] for k in range(len(scene.objects))}
+        view = v.scene_view(scene, list(recorded), recorded)
+        ids = [r for r in rooms if view.room_desc[r]]
+        for t in sorted({r.type for r in scene.rooms}):
+            sims = v.cos([t], [view.room_desc[r] for r in ids])[0]
+            for r, x in zip(ids, sims):
+                room_rows.append((sims.max() - x, rooms[r].type == t))
+    return (np.array(head_rows, np.float64).reshape(-1, 4), np.array(kind_rows, np.float64).reshape(-1, 2),
+            np.array(room_rows, np.float64).reshape(-1, 2))
+
+
+def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 3) -> dict:
+    """Fits tau_head / head_margin, tau_kind and room_margin on seen-split houses; returns the fitted.json entry."""
+    H, Kd, R = training_rows(cfg, embedder, scenes, seed, looks)
+    exact, label = H[:, 2] > 0, H[:, 3] > 0
+    best_head = max(((balanced_accuracy(exact | ((H[:, 0] >= t) & (H[:, 1] <= m)), label), -t, -m)
+                     for t, m in itertools.product(GRID_TAU, GRID_MARGIN)))
+    best_kind = max((balanced_accuracy(Kd[:, 0] >= t, Kd[:, 1] > 0), t) for t in GRID_TAU)
+    best_room = max((balanced_accuracy(R[:, 0] <= m, R[:, 1] > 0), -m) for m in GRID_MARGIN)
+    params = VerifierParams(tau_head=float(-best_head[1]), head_margin=float(-best_head[2]),
+                            tau_kind=float(best_kind[1]), room_margin=float(-best_room[1]))
+    return {
+        "params": dataclasses.asdict(params),
+        "balanced_accuracy": {"name": round(best_head[0], 4), "attribute": round(best_kind[0], 4),
+                              "room": round(best_room[0], 4)},
+        "samples": {"name": len(H), "attribute": len(Kd), "room": len(R)},
+        "fitted_on": {"split": "seen", "world_seed": seed, "scenes": scenes, "looks": looks,
+                      "embedder": cfg.memory.embedder},
+    }
+
+
+def write_fitted(entry: dict, embedder_name: str, path: str | Path) -> Path:
+    """Adds (or replaces) one embedder's entry in a fitted.json, keeping the other embedders' entries."""
+    path = Path(path)
+    d = json.loads(path.read_text()) if path.exists() else {"format": FITTED_FORMAT, "verifier": {}}
+    d["verifier"][embedder_name] = entry
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(d, indent=1, sort_keys=True) + "\n")
+    return path

@@ -1,0 +1,294 @@
+"""Open-vocabulary verification for the reflection: is a perceived object the subgoal's target?
+
+    verifier = Verifier.build(scenes, bank, embedder, cfg)         # thresholds from data/fitted.json
+    verdicts = verifier.table(episodes, subgoals)                   # [e][g] -> (O,) bool over scene objects
+
+What the robot perceives of an object is what its captioner emits at close range (a name and a
+description, with seeded perception noise: `perceive`), its sensor readings, and positions (its own,
+the coordinate hint's, and those of the anchors its memory recorded). A subgoal is checked against that:
+
+- name: the target's head noun against the perceived name through the sentence encoder: an exact
+  match passes; otherwise the cosine must reach `tau_head` and lie within `head_margin` of the best
+  match among the names the memory recorded in the scene (so "chair" keeps to the chair when the house
+  has one and an office chair, while "couch" still finds the sofa and "appliance" the fridge);
+- attributes: said in the description (whole words; a hyphenated value such as "gold-framed" by its
+  first part), or at least not contradicted: no descriptor of the description is of the same kind
+  (cosine >= `tau_kind`: "switched off" against a wanted "switched on", "walnut" against "oak");
+- room: the room phrase against a description of every room (the names the memory recorded in it),
+  within `room_margin` of the best-matching room, so room names no prototype knows still work;
+- structured checks as before: coordinate hints, sensor thresholds and superlatives (ranked among the
+  recorded instances that pass the same checks), relations by position against recorded anchors that
+  pass the name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
+
+Nothing here reads a ground-truth category or attribute: only the captioner's words. The thresholds are
+fitted on the seen split only (`fit_verifier`, `ragnav fit-verifier`) and kept, with where they came
+from, in ragnav_jax/data/fitted.json (`load_fitted`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import re
+import zlib
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from ragnav_jax.errors import UserError
+from ragnav_jax.language.episodes import relation_holds, sensor_holds
+from ragnav_jax.language.types import Subgoal, Target
+from ragnav_jax.memory.captioner import CaptionNoise, describe_object, find_words
+from ragnav_jax.world.scene import Scene, SceneObject
+
+FITTED_PATH = Path(__file__).resolve().parent.parent / "data" / "fitted.json"
+FITTED_FORMAT = "ragnav-fitted/1"
+_STOP = frozenset("a an the in with at about of and that is which its it's a's has having reading".split())
+_CUT = re.compile(r",|;|\(|\)|\b(?:in|with|at|that|which|whose|reading)\b")
+_NUMBER = re.compile(r"^[-+]?\d*[.,]?\d+$|^[°%]|^°c$|^ndvi$|^humidity$|^%$")
+
+
+@dataclasses.dataclass(frozen=True)
+class VerifierParams:
+    """Thresholds of the check (fitted on the seen split, see module docstring)."""
+
+    tau_head: float = 0.5
+    head_margin: float = 0.1
+    tau_kind: float = 0.5
+    room_margin: float = 0.05
+
+
+def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierParams:
+    """The verifier thresholds fitted for an embedder (`minilm` | `hashing`) from a fitted.json."""
+    path = Path(path) if path else FITTED_PATH
+    try:
+        d = json.loads(path.read_text())
+    except (OSError, ValueError) as e:
+        raise UserError(f"{path}: cannot read fitted values ({e})") from None
+    if d.get("format") != FITTED_FORMAT:
+        raise UserError(f"{path}: not a {FITTED_FORMAT} file (format: {d.get('format')!r})")
+    entry = d.get("verifier", {}).get(embedder_name)
+    if entry is None:
+        raise UserError(f"{path}: verifier: no thresholds for embedder '{embedder_name}' (run ragnav fit-verifier)")
+    names = {f.name for f in dataclasses.fields(VerifierParams)}
+    return VerifierParams(**{k: float(v) for k, v in entry["params"].items() if k in names})
+
+
+# ----------------------------------------------------------------------------------------------------
+# Perception and reading descriptions
+
+
+@dataclasses.dataclass(frozen=True)
+class Perceived:
+    """What the robot perceives of one object: the captioner's name and description of it."""
+
+    name: str  # lower case ("couch")
+    text: str  # the description, lower case, no article ("grey fabric couch, switched on")
+
+
+def perceive(rng: np.random.Generator, o: SceneObject, noise: CaptionNoise) -> Perceived:
+    """One close-range look at object o (no sensor text: readings come from the sensors)."""
+    label, phrase = describe_object(rng, o, 99.0, noise)
+    return Perceived(label.lower(), _strip_article(phrase.lower()))
+
+
+def _strip_article(s: str) -> str:
+    return re.sub(r"^(?:an?|the)\s+", "", s.strip())
+
+
+def descriptors(p: Perceived) -> tuple[str, ...]:
+    """The descriptive words of a description, each a word before the name or a chunk after it
+    ('grey fabric sofa in a terracotta pot, switched on' -> ('grey', 'fabric', 'terracotta pot', 'switched on'))."""
+    m = find_words(p.name, p.text)
+    pre, post = (p.text[: m.start()], p.text[m.end():]) if m else ("", p.text)
+    out = [w for w in pre.split() if w not in _STOP]
+    for chunk in _CUT.split(post):
+        words = [w for w in chunk.split() if w not in _STOP and not _NUMBER.match(w)]
+        if words:
+            out.append(" ".join(words))
+    return tuple(dict.fromkeys(out))
+
+
+def said(attr: str, text: str) -> bool:
+    """The description states this attribute: as whole words, or a hyphenated value by its first part."""
+    return bool(find_words(attr, text)) or ("-" in attr and bool(find_words(attr.split("-")[0], text)))
+
+
+# ----------------------------------------------------------------------------------------------------
+# The check
+
+
+class Verifier:
+    """Name, attribute and room checks on encoder similarities, plus the structured checks."""
+
+    def __init__(self, embedder, params: VerifierParams, near_distance: float, location_radius: float,
+                 noise: CaptionNoise, seed: int):
+        self.embedder, self.p = embedder, params
+        self.near, self.radius, self.noise, self.seed = near_distance, location_radius, noise, seed
+        self._vec: dict[str, np.ndarray] = {}
+
+    @classmethod
+    def build(cls, embedder, cfg, params: VerifierParams | None = None) -> Verifier:
+        params = params or load_fitted(getattr(embedder, "name", cfg.memory.embedder), cfg.eval.verifier_file or None)
+        noise = CaptionNoise(confusion=cfg.eval.verify_confusion, synonym=cfg.memory.caption_synonym,
+                             attribute_keep=cfg.eval.verify_attribute_keep)
+        return cls(embedder, params, cfg.episodes.near_distance, cfg.episodes.location_radius, noise, cfg.seed)
+
+    # -- encoder similarities, cached per string
+    def vectors(self, texts: Sequence[str]) -> np.ndarray:
+        new = sorted({t for t in texts if t not in self._vec})
+        if new:
+            for t, v in zip(new, np.asarray(self.embedder.embed(new), np.float32)):
+                self._vec[t] = v
+        return np.stack([self._vec[t] for t in texts]) if texts else np.zeros((0, 1), np.float32)
+
+    def cos(self, a: Sequence[str], b: Sequence[str]) -> np.ndarray:
+        """(len(a), len(b)) cosine similarities (rows are unit vectors)."""
+        if not len(a) or not len(b):
+            return np.zeros((len(a), len(b)), np.float32)
+        return self.vectors(list(a)) @ self.vectors(list(b)).T
+
+    # -- the three encoder checks
+    def names_match(self, head: str, names: Sequence[str], vocab: Sequence[str]) -> np.ndarray:
+        """(len(names),) bool: the head noun names these perceived names (vocab: the scene's recorded names)."""
+        names = list(names)
+        c = self.cos([head], names)[0]
+        best = max(float(self.cos([head], list(vocab)).max()) if len(vocab) else -1.0, float(c.max(initial=-1.0)))
+        exact = np.array([n == head for n in names], bool)
+        return exact | ((c >= self.p.tau_head) & (c >= best - self.p.head_margin))
+
+    def contradicted(self, attr: str, p: Perceived) -> bool:
+        """The description says another value of the attribute's kind and not the attribute."""
+        if said(attr, p.text):
+            return False
+        ds = [d for d in descriptors(p) if d != attr]
+        return bool(ds) and float(self.cos([attr], ds).max()) >= self.p.tau_kind
+
+    def target_fits(self, t: Target, ps: Sequence[Perceived], vocab: Sequence[str]) -> np.ndarray:
+        """(len(ps),) bool: name and attributes (no relations) of t fit these perceptions."""
+        ok = self.names_match(t.head, [p.name for p in ps], vocab)
+        for a in t.attributes:
+            ok &= np.array([not self.contradicted(a, p) for p in ps], bool)
+        return ok
+
+    def rooms_match(self, room: str, descs: dict[str, str]) -> set[str]:
+        """Room ids whose description matches the room phrase (within room_margin of the best); rooms with
+        no recorded names are unknown and pass."""
+        known = {r: d for r, d in descs.items() if d}
+        out = set(descs) - set(known)
+        if known:
+            ids = list(known)
+            c = self.cos([room], [known[r] for r in ids])[0]
+            out |= {r for r, x in zip(ids, c) if x >= c.max() - self.p.room_margin}
+        return out
+
+    # -- the verdict table
+    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
+        """What the robot's memory holds of a scene: recorded objects, names, room descriptions."""
+        vocab = sorted({n.lower() for ns in recorded_names.values() for n in ns})
+        by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
+        for oi, ns in recorded_names.items():
+            for n in ns:
+                if n.lower() not in by_room[scene.objects[oi].room]:
+                    by_room[scene.objects[oi].room].append(n.lower())
+        descs = {r: ("a room with " + ", ".join(ns[:12])) if ns else "" for r, ns in by_room.items()}
+        return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), descs)
+
+    def perceptions_of(self, scene: Scene, key: str) -> list[Perceived]:
+        """One close-range perception of every scene object, seeded by (seed, key)."""
+        rng = np.random.default_rng(np.random.SeedSequence([int(self.seed), zlib.crc32(key.encode())]))
+        return [perceive(rng, o, self.noise) for o in scene.objects]
+
+    def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Perceived]) -> np.ndarray:
+        """(O,) bool: each scene object, perceived as ps, passes the check for subgoal sg."""
+        objs = view.scene.objects
+        O = len(objs)
+        ok = self.target_fits(sg.target, ps, view.vocab)
+        pool = [i for i in view.known]
+        for r in sg.target.relations:  # anchors the memory recorded; an unrecorded one leaves it unchecked
+            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab)
+            anchors = [objs[i] for i, f in zip(pool, fit) if f]
+            if anchors:
+                holds = np.array([any(relation_holds(r.type, o, a, self.near) for a in anchors) for o in objs])
+                ok &= holds
+        if sg.location is not None:
+            ok &= np.array([math.dist(o.position[:2], (sg.location.x, sg.location.y)) <= self.radius for o in objs])
+        for c in sg.sensors:
+            has = np.array([c.reading in o.readings for o in objs])
+            ok &= has
+            if not c.is_superlative:
+                ok &= np.array([h and sensor_holds(c, o.readings[c.reading]) for h, o in zip(has, objs)])
+        if sg.room is not None:
+            rooms = self.rooms_match(sg.room, view.room_desc)
+            in_room = np.array([o.room in rooms for o in objs])
+            ok &= in_room
+        for c in sg.sensors:
+            if c.is_superlative:  # rank among the recorded instances passing the same checks (same room)
+                rivals = [i for i in set(pool) | set(np.flatnonzero(ok).tolist()) if ok[i]]
+                keep = np.zeros(O, bool)
+                for i in np.flatnonzero(ok):
+                    vals = [objs[j].readings[c.reading] for j in rivals
+                            if sg.room is None or objs[j].room == objs[i].room]
+                    v = objs[i].readings[c.reading]
+                    keep[i] = v == (max(vals) if c.comparator == "max" else min(vals)) if vals else True
+                ok &= keep
+        return ok
+
+    def contradicts(self, sg: Subgoal, names: Sequence[str], texts: Sequence[str], vocab: Sequence[str]) -> bool:
+        """RAGNav's pre-check on what the memory recorded of an instance (its names and descriptions): every
+        description names something else, or every one that names the target contradicts an attribute."""
+        if not len(names):
+            return False
+        ps = [Perceived(n.lower(), _strip_article(t.lower())) for n, t in zip(names, texts)]
+        fit = self.names_match(sg.target.head, [p.name for p in ps], vocab)
+        if not fit.any():
+            return True
+        return any(all(self.contradicted(a, p) for p, f in zip(ps, fit) if f) for a in sg.target.attributes)
+
+
+@dataclasses.dataclass(frozen=True)
+class SceneView:
+    scene: Scene
+    known: tuple[int, ...]  # scene objects the memory recorded
+    vocab: tuple[str, ...]  # every name the memory's captions used
+    room_desc: dict  # room id -> "a room with ..." from the names recorded there ('' when none)
+
+
+def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
+    """From a scene's memory: the names its captions gave each recorded object, and each (article-free)
+    caption phrase's name."""
+    from ragnav_jax.retrieval.index import node_slots
+
+    objs, phrases = node_slots(meta, scene)
+    names: dict[int, list[str]] = {}
+    name_of: dict[str, str] = {}
+    for os_, ps, ls in zip(objs, phrases, meta.caption_labels):
+        for oi, ph, lab in zip(os_, ps, ls):
+            names.setdefault(int(oi), []).append(lab)
+            name_of.setdefault(ph, lab)
+    return names, name_of
+
+
+def verdict_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, subgoals) -> list[list[np.ndarray]]:
+    """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
+    episode that did not parse). Perception noise is seeded by (cfg.seed, episode id)."""
+    by_name = {s.name: s for s in scenes}
+    obs = np.asarray(bank.memory.obs_object)
+    mask = np.asarray(bank.memory.node_mask)
+    views = {}
+    for b, meta in enumerate(bank.metas):
+        if meta.scene in by_name:
+            scene = by_name[meta.scene]
+            known = sorted({int(x) for x in obs[b][mask[b]].ravel() if x >= 0})
+            views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, scene)[0])
+    out = []
+    for ep, sgs in zip(episodes, subgoals):
+        if not sgs:
+            out.append([])
+            continue
+        view = views[ep.scene]
+        ps = verifier.perceptions_of(view.scene, ep.id)
+        out.append([verifier.verdicts(view, sg, ps) for sg in sgs])
+    return out

@@ -1,0 +1,143 @@
+"""The open-vocabulary verifier (evaluation/verify.py) and its fitting on the seen split (fitting.py)."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from ragnav_jax.config import load_config
+from ragnav_jax.errors import UserError
+from ragnav_jax.evaluation.verify import Perceived, Verifier, descriptors, load_fitted, said
+from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.types import Target
+from ragnav_jax.memory.encoder import make_embedder
+
+
+@pytest.fixture(scope="module")
+def minilm():
+    cfg = load_config(None, [])
+    return Verifier.build(make_embedder("minilm"), cfg), cfg
+
+
+def P(name: str, text: str) -> Perceived:
+    return Perceived(name, text)
+
+
+def test_descriptors_and_said_read_the_captioners_words():
+    p = P("potted plant", "dark green potted plant in a terracotta pot with ndvi 0.71")
+    assert descriptors(p) == ("dark", "green", "terracotta pot")
+    assert descriptors(P("tumble dryer", "glossy tumble dryer that is switched on")) == ("glossy", "switched on")
+    assert said("switched on", "lamp that is switched on") and not said("switched on", "lamp that is switched off")
+    assert said("gold-framed", "mirror with a gold frame") and not said("white", "white-painted desk")
+
+
+@pytest.mark.parametrize("head,attrs,name,text,ok", [
+    ("couch", (), "sofa", "grey sofa", True),  # a synonym by the encoder, no list
+    ("aquarium", (), "fish tank", "fish tank", True),  # unseen names alike
+    ("zorbulator", (), "zorbulator", "blue zorbulator", True),  # a word no list holds: exact
+    ("couch", (), "bathtub", "white bathtub", False),
+    ("lamp", ("switched on",), "reading lamp", "brass reading lamp that is switched on", True),
+    ("lamp", ("switched on",), "reading lamp", "brass reading lamp that is switched off", False),
+    ("desk", ("walnut",), "desk", "pine desk", False),  # another wood said
+    ("desk", ("walnut",), "desk", "desk", True),  # nothing said of the wood: no evidence against it
+])
+def test_name_and_attributes(minilm, head, attrs, name, text, ok):
+    v, _ = minilm
+    t = Target(" ".join((*attrs, head)), head, attrs)
+    vocab = ["sofa", "bathtub", "desk", "fish tank", "reading lamp", "chair", "office chair"]
+    assert bool(v.target_fits(t, [P(name, text)], vocab)[0]) is ok
+
+
+def test_a_name_the_house_holds_exactly_wins_over_a_near_one(minilm):
+    v, _ = minilm
+    got = v.names_match("chair", ["chair", "office chair"], ["chair", "office chair", "sofa"])
+    assert got.tolist() == [True, bool(v.cos(["chair"], ["office chair"])[0, 0] >= 1.0 - v.p.head_margin)]
+
+
+def test_rooms_by_description_not_by_label(minilm):
+    v, _ = minilm
+    descs = {"r1": "a room with a drum kit, a music stand, a cello", "r2": "a room with a crib, a changing table",
+             "r3": ""}
+    assert v.rooms_match("music room", descs) == {"r1", "r3"}  # r3 recorded nothing: unknown, not excluded
+    assert "r2" in v.rooms_match("nursery", descs) and "r1" not in v.rooms_match("nursery", descs)
+
+
+def test_verdicts_on_the_apartment_read_no_ground_truth_category(minilm, apartment):
+    v, cfg = minilm
+    objs = apartment.objects
+    ids = [o.id for o in objs]
+    everything = list(range(len(objs)))
+    names = {i: [o.category] for i, o in enumerate(objs)}
+    view = v.scene_view(apartment, everything, names)
+    ps = v.perceptions_of(apartment, "test")
+    got = v.verdicts(view, parse_instruction("Go to the fridge.").subgoals[0], ps)
+    assert [ids[i] for i in np.flatnonzero(got)] == ["fridge_1"]
+    # rename the fridge to a word no list knows: the check follows what the captioner says
+    k = ids.index("fridge_1")
+    odd = dataclasses.replace(apartment, objects=tuple(
+        dataclasses.replace(o, category="zorbulator") if i == k else o for i, o in enumerate(objs)))
+    view2 = v.scene_view(odd, everything, {**names, k: ["zorbulator"]})
+    got2 = v.verdicts(view2, parse_instruction("Go to the zorbulator.").subgoals[0], v.perceptions_of(odd, "test"))
+    assert np.flatnonzero(got2).tolist() == [k]
+    # deterministic in (seed, key)
+    assert [p.text for p in v.perceptions_of(apartment, "test")] == [p.text for p in ps]
+
+
+def test_superlative_ranks_recorded_rivals(minilm, apartment):
+    v, _ = minilm
+    objs = apartment.objects
+    everything = list(range(len(objs)))
+    view = v.scene_view(apartment, everything, {i: [o.category] for i, o in enumerate(objs)})
+    sg = parse_instruction("Go to the warmest radiator.").subgoals[0]
+    got = np.flatnonzero(v.verdicts(view, sg, v.perceptions_of(apartment, "s")))
+    rads = [i for i, o in enumerate(objs) if o.category == "radiator"]
+    if len(rads) >= 2:
+        assert got.tolist() == [max(rads, key=lambda i: objs[i].readings["temperature_c"])]
+
+
+def test_contradicts_reads_the_memory(minilm):
+    v, _ = minilm
+    vocab = ["radiator", "sofa", "desk", "fridge"]
+    sg = parse_instruction("Go to the white radiator.").subgoals[0]
+    assert v.contradicts(sg, ["sofa"], ["sofa"], vocab)  # another category throughout
+    assert v.contradicts(sg, ["radiator"], ["grey radiator"], vocab)  # another colour said
+    assert not v.contradicts(sg, ["radiator", "radiator"], ["grey radiator", "white radiator"], vocab)
+    assert not v.contradicts(sg, [], [], vocab)
+
+
+def test_fitted_values_name_their_split():
+    import json
+
+    from ragnav_jax.evaluation.verify import FITTED_PATH
+
+    d = json.loads(FITTED_PATH.read_text())
+    for name, entry in d["verifier"].items():
+        assert entry["fitted_on"]["split"] == "seen" and entry["fitted_on"]["embedder"] == name
+        assert load_fitted(name) == type(load_fitted(name))(**entry["params"])
+    with pytest.raises(UserError, match="no thresholds"):
+        load_fitted("no-such-embedder")
+
+
+def test_fitting_reads_the_seen_split_only(monkeypatch):
+    """Every unseen-split table of the world raises while the verifier is fitted: fitting never reads it."""
+    from ragnav_jax.evaluation import fitting
+    from ragnav_jax.world import vocabulary as V
+
+    for name in [n for n in dir(V) if "UNSEEN" in n]:
+        monkeypatch.setattr(V, name, _Poison(name))
+    cfg = load_config(None, ["world.num_scenes=1", "world.min_objects=10", "world.max_objects=20"])
+    entry = fitting.fit_verifier(cfg, make_embedder("hashing"), scenes=1, seed=3, looks=1)
+    assert entry["fitted_on"]["split"] == "seen" and entry["samples"]["name"] > 0
+    with pytest.raises(UserError, match="world.split"):
+        fitting.fit_verifier(load_config(None, ["world.split=unseen"]), make_embedder("hashing"), scenes=1)
+
+
+class _Poison(dict):
+    def __init__(self, name):
+        super().__init__()
+        self.name = name
+
+    def _raise(self, *a, **k):
+        raise AssertionError(f"fitting read {self.name}")
+
+    __getitem__ = __iter__ = __contains__ = get = items = keys = values = __len__ = _raise
