@@ -117,8 +117,9 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
-    split: str = "seen"  # seen: the generator's own names and sentence templates | unseen: other names (the
-    # world's unseen synonyms and hypernyms) and sentence structures (language/phrasings.py)
+    split: str = "seen"  # seen: the generator's own names and sentence templates | unseen_dev: other names (the
+    # world's unseen synonyms and hypernyms) and the sentence structures of language/phrasings.py, which the
+    # parser may be developed against | unseen: the same names, held-out structures (phrasings_heldout.py)
 
     def __post_init__(self):
         for k in ("text", "text_location", "text_location_sensor"):
@@ -129,7 +130,7 @@ class EpisodesConfig:
         _check(self.near_distance > 0, "episodes.near_distance", "must be > 0")
         _check(self.location_radius > 0, "episodes.location_radius", "must be > 0")
         _check(self.location_margin >= self.location_radius, "episodes.location_margin", "must be >= location_radius")
-        _check(self.split in ("seen", "unseen"), "episodes.split", "must be one of seen, unseen")
+        _check(self.split in ("seen", "unseen_dev", "unseen"), "episodes.split", "must be one of seen, unseen_dev, unseen")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -459,6 +460,7 @@ class EvalConfig:
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
     verify_confusion: float = 0.01  # ... and chance the object is named as a similar category
+    verify_looks: int = 3  # close-range looks at an object on arrival (the look-around); an attribute said in one counts
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")

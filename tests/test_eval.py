@@ -222,6 +222,18 @@ def test_sign_test_matches_scipy(wins, losses):
     assert sign_test_p(wins, losses) == pytest.approx(ref, rel=1e-9, abs=1e-12)
 
 
+@settings(max_examples=40, deadline=None)
+@given(st_.integers(0, 60), st_.integers(1, 60))
+def test_wilson_interval_matches_scipy(k, n):
+    from scipy.stats import binomtest
+
+    from ragnav_jax.evaluation.metrics import wilson_interval
+
+    k = min(k, n)
+    ref = binomtest(k, n).proportion_ci(0.95, method="wilson")
+    assert wilson_interval(k, n) == pytest.approx((ref.low, ref.high), abs=1e-6)
+
+
 def test_paired_comparison_counts_episodes_and_goals():
     from ragnav_jax.evaluation.metrics import paired_comparison
 
@@ -259,7 +271,7 @@ def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
         for j, ph in enumerate(row):
             assert ph in said[slot_inst[n, j]]
     sg = parse_instruction("Go to the fridge at (0.0, 0.0).").subgoals[0]
-    args = (["fridge"], ["fridge"], ["fridge", "sofa"])
+    args = (["fridge"], ["fridge"], ["fridge", "sofa"], {})
     assert ruled_out(verifier, sg, *args, np.array([30.0, 30.0]), 1.0)  # beyond the hint's radius
     assert not ruled_out(verifier, sg, *args, np.array([0.5, 0.0]), 1.0)
 

@@ -8,7 +8,7 @@ Phases (host Python only between them; every simulation step runs inside a jitte
 2. Execute legs: every active episode drives its current leg together (`execute.Executor.run`:
    lax.while_loop over control steps, vmapped over episodes and their scenes' geometry).
 3. Reflect on arrival (`Executor.look`: camera visibility at several headings from the simulated
-   pose; `confirm`: is a visible object the subgoal's target?). Confirmed: drive up to it (an approach
+   pose; the verifier's verdict table: is a visible object the subgoal's target?). Confirmed: drive up to it (an approach
    leg) and declare FOUND. Not confirmed, or the approach is blocked: reject the candidate, take the
    goal's next candidate and re-plan the remaining order, at most `eval.retries` times per goal.
 Judging (MultiON-style, on the simulated trajectory only): a FOUND for goal k counts when the robot's
@@ -19,10 +19,11 @@ every goal was found (strict episodes: in the instruction's order) within `eval.
 Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
 also plans and drives straight lines (no map); the retrieval baselines (naive_rag, graphrag, lightrag)
 on RAGNav's planner; navigation baselines reimplemented *in the style of* the papers: `remembr`
-(flat caption memory with positions, text retrieval plus a position term, instruction order,
-straight-line local planning), `etpnav` (no prior memory: replays the robot's own frontier
+(flat caption memory with positions, text retrieval plus a position term, instruction order, the same
+map paths and local planner as RAGNav), `etpnav` (no prior memory: replays the robot's own frontier
 exploration from the start pose until the target is seen, then approaches it; instruction order) and
-`oracle` (true goal positions, optimal order, topological paths).
+`oracle` (true goal positions, optimal order, topological paths). Every method but the Oracle checks
+what it sees with the same open-vocabulary verifier (`verify.py`: a verdict table computed before the loop).
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.evaluation.verify import Verifier, recorded, verdict_table
+from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
@@ -88,7 +89,9 @@ def method_spec(name: str) -> MethodSpec:
         return MethodSpec(name, variant, variant == "no_topology", True)
     if name in BASELINES:
         return MethodSpec(name, name, False, True)
-    return {"remembr": MethodSpec(name, "remembr", True, False), "etpnav": MethodSpec(name, "etpnav", False, False),
+    # ReMEmbR hands its retrieved goal to a standard navigation stack: the same map paths and local planner as
+    # RAGNav here (it once drove straight lines into walls, which measured a crippled navigator, not its memory).
+    return {"remembr": MethodSpec(name, "remembr", False, False), "etpnav": MethodSpec(name, "etpnav", False, False),
             "oracle": MethodSpec(name, "oracle", False, True)}[name]
 
 
@@ -123,7 +126,8 @@ def box_distance(obj, xy) -> float:
     return math.hypot(dx, dy)
 
 
-def ruled_out(verifier, sg: Subgoal | None, names, texts, vocab, est: np.ndarray, location_radius: float) -> bool:
+def ruled_out(verifier, sg: Subgoal | None, names, texts, vocab, classes, est: np.ndarray,
+              location_radius: float) -> bool:
     """RAGNav's pre-check of a candidate instance on what the memory holds: its recorded names and
     descriptions contradict the target (Verifier.contradicts), or its estimated position lies beyond the
     coordinate hint's radius."""
@@ -131,7 +135,7 @@ def ruled_out(verifier, sg: Subgoal | None, names, texts, vocab, est: np.ndarray
         return False
     if sg.location is not None and math.dist(est, (sg.location.x, sg.location.y)) > location_radius:
         return True
-    return verifier.contradicts(sg, names, texts, vocab)
+    return verifier.contradicts(sg, names, texts, vocab, classes)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -258,6 +262,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         timing["embed_ms"] = bmeta.embed_ms
         rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
         name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
+        classes = [name_classes(r[0])[0] for r in rec]  # per scene: name -> its aliases
         vocab = [sorted({x.lower() for ns in r[0].values() for x in ns}) for r in rec]  # per scene: every name
         if batch is not None:
             jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
@@ -294,7 +299,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                     if cfg.eval.precheck and verifier is not None:  # on the memory's own records (no driving)
                         texts = [bmeta.imetas[b_].instance_phrases[inst[j]] if inst[j] >= 0 else () for j in pick]
                         kept = [j for j, ts in zip(pick, texts) if inst[j] < 0 or not ruled_out(
-                            verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_],
+                            verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_], classes[b_],
                             inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
                         pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
                     pick = pick[:k]

@@ -3,7 +3,8 @@
     entry = fit_verifier(cfg, embedder, scenes=8, seed=12345)    # {"params": ..., "fitted_on": ..., ...}
 
 Training data: houses drawn by the seen-split generator (`world.split=seen`, its own seed, never the
-evaluation houses), each object perceived a few times by the close-range captioner. Labels come from
+evaluation houses), each object perceived `looks` times by the captioner (standing for the memory's
+views of it: its names and aliases). Labels come from
 the seen generator's own vocabulary: a head noun names an object when `category_matches` says so
 (category, synonym or hypernym); an attribute is contradicted when the description says another option
 of the same attribute kind; a room phrase names the rooms of that type. Each threshold is the grid
@@ -35,6 +36,18 @@ def balanced_accuracy(pred: np.ndarray, label: np.ndarray) -> float:
     return float((tpr + tnr) / 2)
 
 
+def plateau_centre(acc: dict[tuple, float]) -> tuple[tuple, float]:
+    """The grid point in the middle of the best-scoring points (coordinate by coordinate, each the median of
+    the best points left), so a threshold sits away from the edge of what the training data allows."""
+    top = max(acc.values())
+    best = [k for k, a in acc.items() if a >= top - 1e-12]
+    for d in range(len(best[0])):
+        vals = sorted({k[d] for k in best})
+        mid = vals[(len(vals) - 1) // 2]
+        best = [k for k in best if k[d] == mid]
+    return best[0], top
+
+
 def _seen_scenes(cfg, scenes: int, seed: int):
     from ragnav_jax.world.generator import generate_scene
 
@@ -43,27 +56,34 @@ def _seen_scenes(cfg, scenes: int, seed: int):
     return [generate_scene(cfg.world, seed, i) for i in range(scenes)]
 
 
-def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 3):
-    """(name rows (n, 4): cosine, gap to the best, exact, label; attribute rows (n, 2): best cosine to a
+def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8):
+    """(name rows (n, 5): cosine, gap to the best, exact, label, head is a name the house uses; attribute rows (n, 2): best cosine to a
     descriptor, label; room rows (n, 2): gap to the best room, label) from seen-split houses."""
     from ragnav_jax.world.vocabulary import catalog_for
 
     catalog = catalog_for("seen")
     v = Verifier.build(embedder, cfg, VerifierParams())
+    v.looks = 1  # one perception per view; `looks` views stand for the memory's records of each object
     houses = _seen_scenes(cfg, scenes, seed)
     head_rows, kind_rows, room_rows = [], [], []  # (features..., label)
     for h, scene in enumerate(houses):
-        views = [v.perceptions_of(scene, f"fit-{seed}-{h}-{k}") for k in range(looks)]
+        views = [[p for (p,) in v.perceptions_of(scene, f"fit-{seed}-{h}-{k}")] for k in range(looks)]
         vocab = sorted({p.name for ps in views for p in ps})
         ps = views[0]
         cats = sorted({o.category for o in scene.objects})
         heads = sorted({x for c in cats for x in (c, *SYNONYMS.get(c, ()))} | {y for y, m in HYPERNYMS.items() if m & set(cats)})
-        names = [p.name for p in ps]
-        c = v.cos(heads, names)  # (H, O)
+        recorded = {k: [views[m][k].name for m in range(looks)] for k in range(len(scene.objects))}
+        view = v.scene_view(scene, list(recorded), recorded)
+        names = [view.aliases[j] for j in range(len(scene.objects))]
+        flat = sorted({x for ns in names for x in ns})
+        cf = v.cos(heads, flat)  # (H, F)
+        col = {x: k for k, x in enumerate(flat)}
+        c = np.stack([cf[:, [col[x] for x in ns]].max(1) for ns in names], 1)  # (H, O): best name of each object
         best = np.maximum(v.cos(heads, vocab).max(1), c.max(1))
         for i, head in enumerate(heads):
             for j, o in enumerate(scene.objects):
-                head_rows.append((c[i, j], best[i] - c[i, j], names[j] == head, category_matches(o.category, head)))
+                head_rows.append((c[i, j], best[i] - c[i, j], head in names[j], category_matches(o.category, head),
+                                  head in vocab))
         for o, p in zip(scene.objects, ps):
             attrs = dict(o.attributes)
             for kind, opts in catalog[o.category].attrs:
@@ -75,31 +95,29 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
                     x = float(v.cos([w], ds).max()) if ds else -1.0
                     kind_rows.append((x, kind in attrs and said(attrs[kind], p.text)))
         rooms = {r.id: r for r in scene.rooms}
-        recorded = {k: [views[m][k].name for m in range(looks)] for k in range(len(scene.objects))}
-        view = v.scene_view(scene, list(recorded), recorded)
         ids = [r for r in rooms if view.room_desc[r]]
         for t in sorted({r.type for r in scene.rooms}):
             sims = v.cos([t], [view.room_desc[r] for r in ids])[0]
             for r, x in zip(ids, sims):
                 room_rows.append((sims.max() - x, rooms[r].type == t))
-    return (np.array(head_rows, np.float64).reshape(-1, 4), np.array(kind_rows, np.float64).reshape(-1, 2),
+    return (np.array(head_rows, np.float64).reshape(-1, 5), np.array(kind_rows, np.float64).reshape(-1, 2),
             np.array(room_rows, np.float64).reshape(-1, 2))
 
 
-def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 3) -> dict:
+def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> dict:
     """Fits tau_head / head_margin, tau_kind and room_margin on seen-split houses; returns the fitted.json entry."""
     H, Kd, R = training_rows(cfg, embedder, scenes, seed, looks)
-    exact, label = H[:, 2] > 0, H[:, 3] > 0
-    best_head = max(((balanced_accuracy(exact | ((H[:, 0] >= t) & (H[:, 1] <= m)), label), -t, -m)
-                     for t, m in itertools.product(GRID_TAU, GRID_MARGIN)))
-    best_kind = max((balanced_accuracy(Kd[:, 0] >= t, Kd[:, 1] > 0), t) for t in GRID_TAU)
-    best_room = max((balanced_accuracy(R[:, 0] <= m, R[:, 1] > 0), -m) for m in GRID_MARGIN)
-    params = VerifierParams(tau_head=float(-best_head[1]), head_margin=float(-best_head[2]),
-                            tau_kind=float(best_kind[1]), room_margin=float(-best_room[1]))
+    exact, label, known = H[:, 2] > 0, H[:, 3] > 0, H[:, 4] > 0
+    name_acc = {(t, m): balanced_accuracy(exact | (~known & (H[:, 0] >= t) & (H[:, 1] <= m)), label)
+                for t, m in itertools.product(GRID_TAU, GRID_MARGIN)}
+    (tau_head, head_margin), acc_name = plateau_centre(name_acc)
+    (tau_kind,), acc_kind = plateau_centre({(t,): balanced_accuracy(Kd[:, 0] >= t, Kd[:, 1] > 0) for t in GRID_TAU})
+    (room_margin,), acc_room = plateau_centre({(m,): balanced_accuracy(R[:, 0] <= m, R[:, 1] > 0) for m in GRID_MARGIN})
+    params = VerifierParams(tau_head=float(tau_head), head_margin=float(head_margin), tau_kind=float(tau_kind),
+                            room_margin=float(room_margin))
     return {
         "params": dataclasses.asdict(params),
-        "balanced_accuracy": {"name": round(best_head[0], 4), "attribute": round(best_kind[0], 4),
-                              "room": round(best_room[0], 4)},
+        "balanced_accuracy": {"name": round(acc_name, 4), "attribute": round(acc_kind, 4), "room": round(acc_room, 4)},
         "samples": {"name": len(H), "attribute": len(Kd), "room": len(R)},
         "fitted_on": {"split": "seen", "world_seed": seed, "scenes": scenes, "looks": looks,
                       "embedder": cfg.memory.embedder},

@@ -160,6 +160,16 @@ def summarise(rows: list[dict], timing: dict, task_time_s: float, method: str) -
     return out
 
 
+def wilson_interval(k: int, n: int, z: float = 1.959964) -> tuple[float, float]:
+    """Wilson score interval of a success proportion k / n (95% by default); (0, 1) when n = 0."""
+    if n == 0:
+        return 0.0, 1.0
+    p = k / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
 def sign_test_p(wins: int, losses: int) -> float:
     """Exact two-sided sign test: P(a split at least this uneven | no difference), ties dropped."""
     n = wins + losses

@@ -7,15 +7,16 @@ What the robot perceives of an object is what its captioner emits at close range
 description, with seeded perception noise: `perceive`), its sensor readings, and positions (its own,
 the coordinate hint's, and those of the anchors its memory recorded). A subgoal is checked against that:
 
-- name: the target's head noun against the perceived name through the sentence encoder: an exact
-  match passes; otherwise the cosine must reach `tau_head` and lie within `head_margin` of the best
+- name: the target's head noun against the names of the object (what the robot calls it now, and
+  what its memory called the same instance) through the sentence encoder: an exact match passes; otherwise the cosine must reach `tau_head` and lie within `head_margin` of the best
   match among the names the memory recorded in the scene (so "chair" keeps to the chair when the house
   has one and an office chair, while "couch" still finds the sofa and "appliance" the fridge);
 - attributes: said in the description (whole words; a hyphenated value such as "gold-framed" by its
   first part), or at least not contradicted: no descriptor of the description is of the same kind
   (cosine >= `tau_kind`: "switched off" against a wanted "switched on", "walnut" against "oak");
-- room: the room phrase against a description of every room (the names the memory recorded in it),
-  within `room_margin` of the best-matching room, so room names no prototype knows still work;
+- room: the room phrase against a description of every room (the room type the forest's summariser
+  infers from what the memory recorded there, and those names), within `room_margin` of the
+  best-matching room, so room names no prototype knows still work;
 - structured checks as before: coordinate hints, sensor thresholds and superlatives (ranked among the
   recorded instances that pass the same checks), relations by position against recorded anchors that
   pass the name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
@@ -28,10 +29,12 @@ from, in ragnav_jax/data/fitted.json (`load_fitted`).
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 import math
 import re
 import zlib
+from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -40,7 +43,7 @@ import numpy as np
 from ragnav_jax.errors import UserError
 from ragnav_jax.language.episodes import relation_holds, sensor_holds
 from ragnav_jax.language.types import Subgoal, Target
-from ragnav_jax.memory.captioner import CaptionNoise, describe_object, find_words
+from ragnav_jax.memory.captioner import CaptionNoise, canonical, describe_object, find_words
 from ragnav_jax.world.scene import Scene, SceneObject
 
 FITTED_PATH = Path(__file__).resolve().parent.parent / "data" / "fitted.json"
@@ -74,6 +77,13 @@ def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierP
         raise UserError(f"{path}: verifier: no thresholds for embedder '{embedder_name}' (run ragnav fit-verifier)")
     names = {f.name for f in dataclasses.fields(VerifierParams)}
     return VerifierParams(**{k: float(v) for k, v in entry["params"].items() if k in names})
+
+
+@functools.cache
+def _summariser():
+    from ragnav_jax.memory.summarise import Summariser
+
+    return Summariser()
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -124,8 +134,8 @@ class Verifier:
     """Name, attribute and room checks on encoder similarities, plus the structured checks."""
 
     def __init__(self, embedder, params: VerifierParams, near_distance: float, location_radius: float,
-                 noise: CaptionNoise, seed: int):
-        self.embedder, self.p = embedder, params
+                 noise: CaptionNoise, seed: int, looks: int = 3):
+        self.embedder, self.p, self.looks = embedder, params, looks
         self.near, self.radius, self.noise, self.seed = near_distance, location_radius, noise, seed
         self._vec: dict[str, np.ndarray] = {}
 
@@ -134,7 +144,8 @@ class Verifier:
         params = params or load_fitted(getattr(embedder, "name", cfg.memory.embedder), cfg.eval.verifier_file or None)
         noise = CaptionNoise(confusion=cfg.eval.verify_confusion, synonym=cfg.memory.caption_synonym,
                              attribute_keep=cfg.eval.verify_attribute_keep)
-        return cls(embedder, params, cfg.episodes.near_distance, cfg.episodes.location_radius, noise, cfg.seed)
+        return cls(embedder, params, cfg.episodes.near_distance, cfg.episodes.location_radius, noise, cfg.seed,
+                   cfg.eval.verify_looks)
 
     # -- encoder similarities, cached per string
     def vectors(self, texts: Sequence[str]) -> np.ndarray:
@@ -151,13 +162,19 @@ class Verifier:
         return self.vectors(list(a)) @ self.vectors(list(b)).T
 
     # -- the three encoder checks
-    def names_match(self, head: str, names: Sequence[str], vocab: Sequence[str]) -> np.ndarray:
-        """(len(names),) bool: the head noun names these perceived names (vocab: the scene's recorded names)."""
-        names = list(names)
-        c = self.cos([head], names)[0]
-        best = max(float(self.cos([head], list(vocab)).max()) if len(vocab) else -1.0, float(c.max(initial=-1.0)))
-        exact = np.array([n == head for n in names], bool)
-        return exact | ((c >= self.p.tau_head) & (c >= best - self.p.head_margin))
+    def names_match(self, head: str, names: Sequence[Sequence[str]], vocab: Sequence[str]) -> np.ndarray:
+        """(len(names),) bool: the head noun names these objects, each known by a set of names (what the robot
+        calls it now and what its memory called the same instance); vocab: every name recorded in the scene."""
+        exact = np.array([head in ns for ns in names], bool)
+        if head in vocab:  # the house's own word for it: trust the memory's naming
+            return exact
+        flat = sorted({n for ns in names for n in ns})
+        if not flat:
+            return exact
+        c = dict(zip(flat, self.cos([head], flat)[0]))
+        best = max(float(self.cos([head], list(vocab)).max()) if len(vocab) else -1.0, max(c.values()))
+        score = np.array([max((c[n] for n in ns), default=-1.0) for ns in names])
+        return exact | ((score >= self.p.tau_head) & (score >= best - self.p.head_margin))
 
     def contradicted(self, attr: str, p: Perceived) -> bool:
         """The description says another value of the attribute's kind and not the attribute."""
@@ -166,49 +183,61 @@ class Verifier:
         ds = [d for d in descriptors(p) if d != attr]
         return bool(ds) and float(self.cos([attr], ds).max()) >= self.p.tau_kind
 
-    def target_fits(self, t: Target, ps: Sequence[Perceived], vocab: Sequence[str]) -> np.ndarray:
-        """(len(ps),) bool: name and attributes (no relations) of t fit these perceptions."""
-        ok = self.names_match(t.head, [p.name for p in ps], vocab)
+    def target_fits(self, t: Target, looks: Sequence[Sequence[Perceived]], vocab: Sequence[str],
+                    aliases: Sequence[Sequence[str]] | None = None) -> np.ndarray:
+        """(len(looks),) bool: name and attributes (no relations) of t fit each object's close-range looks;
+        aliases: the names the memory recorded for each object. At close range an attribute must be seen:
+        said in one of the looks."""
+        aliases = aliases if aliases is not None else [()] * len(looks)
+        ok = self.names_match(t.head, [{p.name for p in ls} | set(a) for ls, a in zip(looks, aliases)], vocab)
         for a in t.attributes:
-            ok &= np.array([not self.contradicted(a, p) for p in ps], bool)
+            ok &= np.array([any(said(a, p.text) for p in ls) for ls in looks], bool)
         return ok
 
     def rooms_match(self, room: str, descs: dict[str, str]) -> set[str]:
-        """Room ids whose description matches the room phrase (within room_margin of the best); rooms with
-        no recorded names are unknown and pass."""
+        """Room ids whose description matches the room phrase (within room_margin of the best, and every room
+        the summariser gives the same type as one of those: a house may have two bedrooms); rooms with no
+        recorded names are unknown and pass."""
         known = {r: d for r, d in descs.items() if d}
         out = set(descs) - set(known)
         if known:
             ids = list(known)
             c = self.cos([room], [known[r] for r in ids])[0]
-            out |= {r for r, x in zip(ids, c) if x >= c.max() - self.p.room_margin}
+            best = {r for r, x in zip(ids, c) if x >= c.max() - self.p.room_margin}
+            types = {known[r].split(":", 1)[0] for r in best}
+            out |= {r for r in ids if r in best or known[r].split(":", 1)[0] in types}
         return out
 
     # -- the verdict table
     def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
         """What the robot's memory holds of a scene: recorded objects, names, room descriptions."""
         vocab = sorted({n.lower() for ns in recorded_names.values() for n in ns})
+        aliases = alias_sets(recorded_names)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
         for oi, ns in recorded_names.items():
             for n in ns:
                 if n.lower() not in by_room[scene.objects[oi].room]:
                     by_room[scene.objects[oi].room].append(n.lower())
-        descs = {r: ("a room with " + ", ".join(ns[:12])) if ns else "" for r, ns in by_room.items()}
-        return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), descs)
+        counts = {r: Counter(canonical(n) for o, ns in recorded_names.items() if scene.objects[o].room == r for n in ns)
+                  for r in by_room}
+        descs = {r: f"{_summariser().infer_type(counts[r], 2)[0]}: a room with " + ", ".join(ns[:12]) if ns else ""
+                 for r, ns in by_room.items()}
+        return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), descs, aliases)
 
-    def perceptions_of(self, scene: Scene, key: str) -> list[Perceived]:
-        """One close-range perception of every scene object, seeded by (seed, key)."""
+    def perceptions_of(self, scene: Scene, key: str) -> list[tuple[Perceived, ...]]:
+        """`looks` close-range perceptions of every scene object (the look-around on arrival sees it from
+        several headings), seeded by (seed, key)."""
         rng = np.random.default_rng(np.random.SeedSequence([int(self.seed), zlib.crc32(key.encode())]))
-        return [perceive(rng, o, self.noise) for o in scene.objects]
+        return [tuple(perceive(rng, o, self.noise) for _ in range(self.looks)) for o in scene.objects]
 
-    def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Perceived]) -> np.ndarray:
-        """(O,) bool: each scene object, perceived as ps, passes the check for subgoal sg."""
+    def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
+        """(O,) bool: each scene object, perceived as ps (its looks), passes the check for subgoal sg."""
         objs = view.scene.objects
         O = len(objs)
-        ok = self.target_fits(sg.target, ps, view.vocab)
+        ok = self.target_fits(sg.target, ps, view.vocab, [view.aliases.get(i, ()) for i in range(O)])
         pool = [i for i in view.known]
         for r in sg.target.relations:  # anchors the memory recorded; an unrecorded one leaves it unchecked
-            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab)
+            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.aliases.get(i, ()) for i in pool])
             anchors = [objs[i] for i, f in zip(pool, fit) if f]
             if anchors:
                 holds = np.array([any(relation_holds(r.type, o, a, self.near) for a in anchors) for o in objs])
@@ -236,16 +265,51 @@ class Verifier:
                 ok &= keep
         return ok
 
-    def contradicts(self, sg: Subgoal, names: Sequence[str], texts: Sequence[str], vocab: Sequence[str]) -> bool:
-        """RAGNav's pre-check on what the memory recorded of an instance (its names and descriptions): every
-        description names something else, or every one that names the target contradicts an attribute."""
+    def contradicts(self, sg: Subgoal, names: Sequence[str], texts: Sequence[str], vocab: Sequence[str],
+                    classes: dict | None = None) -> bool:
+        """RAGNav's pre-check on what the memory recorded of an instance (its names and descriptions, seen from
+        afar, where attributes are often left unsaid): every description names something else, or every
+        one that names the target says another value of a wanted attribute (`contradicted`). classes: name
+        -> its aliases (`name_classes`)."""
         if not len(names):
             return False
         ps = [Perceived(n.lower(), _strip_article(t.lower())) for n, t in zip(names, texts)]
-        fit = self.names_match(sg.target.head, [p.name for p in ps], vocab)
-        if not fit.any():
-            return True
+        cls = classes or {}
+        if not self.names_match(sg.target.head, [{y for p in ps for y in cls.get(p.name, {p.name})}], vocab)[0]:
+            return True  # no name the memory gave the instance (or its aliases) fits the target
+        fit = self.names_match(sg.target.head, [cls.get(p.name, {p.name}) for p in ps], vocab)
         return any(all(self.contradicted(a, p) for p, f in zip(ps, fit) if f) for a in sg.target.attributes)
+
+
+def name_classes(recorded_names: dict[int, Sequence[str]], share: float = 0.15) -> tuple[dict, dict]:
+    """Names that mean the same thing, learnt from the memory: (name -> frozenset of its aliases, object ->
+    its frequent names). Names said at least twice and for at least `share` of one instance's views are
+    aliases ('houseplant' and 'potted plant'); a rare confusion ('chair' for an armchair once) joins
+    nothing."""
+    parent: dict[str, str] = {}
+
+    def find(x: str) -> str:
+        while parent.setdefault(x, x) != x:
+            x = parent[x]
+        return x
+
+    frequent = {}
+    for i, ns in recorded_names.items():
+        cnt = Counter(n.lower() for n in ns)
+        frequent[i] = [x for x, k in cnt.items() if k >= 2 and k >= share * len(ns)] or list(cnt)
+        for x in frequent[i]:
+            parent[find(x)] = find(frequent[i][0])
+    groups: dict[str, set[str]] = {}
+    for x in list(parent):
+        groups.setdefault(find(x), set()).add(x)
+    return {x: frozenset(groups[find(x)]) for x in parent}, frequent
+
+
+def alias_sets(recorded_names: dict[int, Sequence[str]]) -> dict[int, tuple[str, ...]]:
+    """Every name an object goes by: its recorded names and the aliases of its frequent ones (name_classes)."""
+    classes, frequent = name_classes(recorded_names)
+    return {i: tuple(sorted({n.lower() for n in ns} | {y for x in frequent[i] for y in classes[x]}))
+            for i, ns in recorded_names.items()}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -253,7 +317,8 @@ class SceneView:
     scene: Scene
     known: tuple[int, ...]  # scene objects the memory recorded
     vocab: tuple[str, ...]  # every name the memory's captions used
-    room_desc: dict  # room id -> "a room with ..." from the names recorded there ('' when none)
+    room_desc: dict  # room id -> "<inferred type>: a room with ..." from the names recorded there ('' when none)
+    aliases: dict  # object index -> every name the memory recorded for it (lower case)
 
 
 def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:

@@ -774,10 +774,15 @@ def _renderer(split: str, what: str):
     """The split's sentence template for a goal, sensor phrase, coordinate hint or whole instruction."""
     if split == "seen":
         return {"goal": render_goal, "sensor": render_sensor, "hint": _hint_text, "instruction": render_instruction}[what]
-    from ragnav_jax.language import phrasings as P
+    if split == "unseen_dev":  # the unseen templates the parser may be developed against
+        from ragnav_jax.language import phrasings as P
 
-    return {"goal": P.render_goal_unseen, "sensor": P.render_sensor_unseen, "hint": P.hint_text_unseen,
-            "instruction": P.render_instruction_unseen}[what]
+        return {"goal": P.render_goal_unseen, "sensor": P.render_sensor_unseen, "hint": P.hint_text_unseen,
+                "instruction": P.render_instruction_unseen}[what]
+    from ragnav_jax.language import phrasings_heldout as H  # held out: nobody working on the parser reads it
+
+    return {"goal": H.render_goal_heldout, "sensor": H.render_sensor_heldout, "hint": H.hint_text_heldout,
+            "instruction": H.render_instruction_heldout}[what]
 
 
 def _rng(seed: int, scene_name: str, modality: str) -> np.random.Generator:

@@ -3,8 +3,8 @@
 The parser is open-vocabulary: any noun it has never seen can be a goal ("rowing machine",
 "defibrillator", "x-ray viewer"). What it needs to know are the words around the nouns: verbs and
 politeness that introduce a goal, determiners, relation and order phrases, descriptive adjectives
-(colours, materials, patterns, sizes, states), room words, sensor reading names, units, comparators
-and number words.
+(colours, materials, patterns, sizes, states), relative-clause words (pronouns, copulas), room words,
+sensor reading names, units, comparators and number words.
 """
 
 from __future__ import annotations
@@ -153,10 +153,9 @@ RELATIVE_LEADERS = frozenset(
 # Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".
 RELATIVE_PRONOUNS = frozenset("that which who".split())
 RELATIVE_CONTRACTED = frozenset("that's which's who's thats".split())  # pronoun + "is"
-COPULA_WORDS = frozenset(
-    "is are was were be been being has have had seems seem appears appear looks look stays stay remains remain "
-    "currently now still already presently also left kept".split()
-)
+TRUE_COPULAS = frozenset("is are was were be been being seems seem appears appear looks look stays stay remains remain".split())
+# Words that may stand between a relative pronoun and a state ("that has been left on", "which is currently lit").
+COPULA_WORDS = TRUE_COPULAS | frozenset("has have had currently now still already presently also left kept".split())
 NEGATED_COPULAS = frozenset("isn't aren't wasn't weren't not".split())
 MADE_OF = (("made", "of"), ("made", "from"), ("made", "out", "of"))
 
@@ -340,6 +339,8 @@ VERBS = (
     "make a quick stop", "stop off", "stop in", "call in", "drop in on", "drop in", "look in on", "pass",
     "go past", "make for", "aim for", "track down", "seek out", "hunt down", "hunt for", "set off", "get yourself",
     "take yourself", "go visit", "go find", "go check", "go inspect", "arrive", "end up", "reach for",
+    "popping", "nipping", "hopping", "dashing", "zipping", "scooting", "wandering", "strolling", "swinging",
+    "making a stop", "stopping off", "stopping by", "dropping by", "passing", "heading", "making your way",
 )
 VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "directly", "quickly", "right", "on",
                   "along", "round", "past")

@@ -6,18 +6,26 @@
 The parser knows function words only (lexicon.py): it has no list of object categories, so any noun
 phrase can be a goal. It works in passes over the lower-cased text:
 
-1. number words before units or after comparators become digits ("about sixty degrees");
-2. coordinate hints ("(3.5, 2.0)", "x=3.5, y=2", "at about 3.5, 2") and sensor phrases ("NDVI above
-   0.6", "about 55 degrees", "under 0.2", "warmest", "with the lowest NDVI") are cut out into
-   placeholders, so their commas and numbers cannot confuse the later passes; half-written numbers
-   left behind are errors;
-3. free-order phrases ("in any order", "in whatever order is quickest") set the order and are removed;
-4. the text is split at punctuation and connectors (then, and, after that, followed by, finally...);
-5. each segment loses its politeness and verb ("I need you to head over to") and is read as a noun
-   phrase (modifiers + head) followed by relations ("near", "next to", "on", "with", "in the room
-   with"...), nested right-branching; "in <room word>" is a room constraint;
-6. segments with no noun (", about 60 degrees,", "near the sofa") join the previous goal; "X after Y"
-   and "X, but first Y" swap; pronoun anchors ("next to it") refer to the previous goal.
+1. number words before units or after comparators become digits ("about sixty-five degrees", "minus
+   ten"); "before anything else" becomes "first";
+2. coordinate hints ("(3.5, 2.0)", "x=3.5, y=2", "at about 3.5, 2", "(3.5 m | 2 m)", "with an x coordinate
+   of 3.5 and a y coordinate of 2") and sensor phrases ("NDVI above 0.6", "about 55 deg C", "under 0.2",
+   "warmest", "with the lowest NDVI", "no lower than 55 °C", "whose humidity exceeds 70 percent") are cut
+   out into placeholders, so their commas and numbers cannot confuse the later passes; half-written
+   numbers left behind are errors;
+3. free-order phrases ("in any order", "in whatever order is quickest", "the order is your call") set the
+   order and are removed;
+4. the text is split at punctuation, brackets and connectors (then, and, after that, followed by...);
+5. each segment loses its politeness and verb ("I'd love it if you could pop over to") and is read as a
+   noun phrase (modifiers + head) followed by relations ("near", "next to", "on", "with", "in the room
+   with"...), nested right-branching, and attributes written after a noun ("that is switched on", "which
+   is red", "that's open", "made of oak", "which is ajar"), which describe the nearest noun; "in <room
+   word>" is a room constraint; "on" is a state after a copula with no noun after it ("which is on"),
+   a relation before a noun ("that is on the table");
+6. segments with no noun (", about 60 degrees,", "near the sofa", ", which is on,") join the previous
+   goal, and so do appositions ("the heater, the black one," or "the fern (the one by the window)")
+   unless they clash with it ("the red chair, the blue one" lists two chairs); "X after Y" and "X, but
+   first Y" swap; pronoun anchors ("next to it") refer to the previous goal.
 
 Anything it cannot read raises ParseError (a UserError) saying what was missing; nothing else escapes.
 """
@@ -49,16 +57,30 @@ MAX_SUBGOALS = 64
 
 
 def _alt(phrases) -> str:
-    """Regex alternation of phrases, longest first, with word boundaries around alphabetic ends."""
-    out = []
-    for p in sorted(set(phrases), key=len, reverse=True):
-        e = re.escape(p).replace(r"\ ", r"\s+")
-        if p[0].isalnum():
-            e = r"\b" + e
-        if p[-1].isalnum():
-            e = e + r"\b"
-        out.append(e)
-    return "(?:" + "|".join(out) + ")"
+    """Regex alternation of phrases, longest first, with word boundaries around alphabetic ends.
+
+    Written as a character trie ("(?:a(?:bove\\b|t(?:\\s+least\\b|\\b))|...)"): where several phrases match at
+    one place they are prefixes of each other and the longest is tried first, as in a plain alternation
+    sorted by length, but a place where none can start is left after one character instead of one try per
+    phrase (the comparator alternation has about a hundred).
+    """
+    trie: dict = {}
+    for p in set(phrases):
+        node = trie
+        for ch in p:
+            node = node.setdefault(ch, {})
+        node[""] = p
+
+    def emit(node: dict, root: bool = False) -> str:
+        alts = []
+        for ch in sorted(k for k in node if k):
+            e = r"\s+" if ch == " " else re.escape(ch)
+            alts.append((r"\b" if root and ch.isalnum() else "") + e + emit(node[ch]))
+        if "" in node:  # the end of a phrase: tried after every longer one
+            alts.append(r"\b" if node[""][-1].isalnum() else "")
+        return alts[0] if len(alts) == 1 and not root else "(?:" + "|".join(alts) + ")"
+
+    return emit(trie, root=True)
 
 
 NUM = r"(?<![\w.])[-+]?(?:\d+(?:\.\d+)?|\.\d+)(?![\d.]?\d)"
@@ -82,6 +104,7 @@ _NW_SEQ = rf"(?:(?:a\s+)?(?:{_NW_ALT})(?:(?:\s+|-)(?:and\s+)?(?:{_NW_ALT}))*)"
 _NW_AFTER_CMP = re.compile(
     rf"(?P<pre>{CMP_ALT}\s+|{_alt(L.COMPARATIVES)}\s+than\s+|{READ_ALT}\s+(?:of|is|at)\s+)(?P<nw>\b{_NW_SEQ}\b)"
 )
+_MINUS = re.compile(rf"\b(?:minus|negative)\s+(?=\d|\.\d|(?:{_NW_ALT})\b)")  # "minus five degrees"
 _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|°|percent\b|per\s+cent\b|%))")
 
 _LOC_LEAD = (
@@ -129,7 +152,7 @@ _COMPARATIVE = re.compile(
 _VERB_BEFORE_SENSOR = re.compile(
     r"\b(?:(?:that|which|who)\s+)?(?:(?:is|are)\s+)?(?:currently\s+)?"
     r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
-    r"|operates|kept|set|heated|cooled|holding|holds|staying|stays)\s+(?=(?P<k>⟪[a-z]+⟫))"
+    r"|operates|kept|set|heated|cooled|holding|holds|staying|stays)(?:\s+(?:at|to))?\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -176,7 +199,7 @@ _FREE = re.compile(
     r"|\b(?:the\s+)?(?:visiting\s+)?(?:order|sequence)\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+"
     r"(?:matter|important|relevant)"
     # "you can pick the order", "feel free to choose the order", "choose the order yourself"
-    r"|\b(?:you\s+(?:can|may|could|get\s+to|are\s+free\s+to|should)\s+|feel\s+free\s+to\s+)?"
+    r"|\b(?:you\s+(?:(?:can|may|could|get\s+to|are\s+free\s+to|should)\s+)?|feel\s+free\s+to\s+)?"
     r"(?:choose|pick|decide(?:\s+on)?|set)\s+(?:the|your\s+own)\s+(?:order|sequence)(?:\s+yourself)?"
     r"|\b(?:in\s+)?(?:any|whatever|whichever)\s+(?:order|sequence)\s+(?:you\s+see\s+fit|suits\s+you)"
     r"|\b(?:in\s+)?(?:an?\s+)?(?:order|sequence)\s+of\s+your\s+(?:choice|choosing)"
@@ -204,11 +227,19 @@ def _phrase_tuples(phrases) -> list[tuple[str, ...]]:
     return sorted({tuple(p.split()) for p in phrases}, key=len, reverse=True)
 
 
-_RELS = sorted(((tuple(k.split()), v) for k, v in L.RELATION_PHRASES.items()), key=lambda kv: -len(kv[0]))
+def _by_first_word(table: dict[str, str]) -> dict[str, list[tuple[tuple[str, ...], str]]]:
+    """{'next to': 'next_to', ...} -> {'next': [(('next', 'to'), 'next_to')], ...}, longest first per word."""
+    out: dict[str, list[tuple[tuple[str, ...], str]]] = {}
+    for k, v in sorted(table.items(), key=lambda kv: -len(kv[0].split())):
+        out.setdefault(k.split()[0], []).append((tuple(k.split()), v))
+    return out
+
+
+_RELS = _by_first_word(L.RELATION_PHRASES)
 _ROOM_PREPS = frozenset({"in", "inside", "within", "into", "inside of"})
 _DANGLING = frozenset(
     "that which who is are that's which's whose where reads shows measures measuring reading showing currently "
-    "located placed situated".split()
+    "located placed situated but".split()
 )
 
 # ----------------------------------------------------------------------------------------------------
@@ -259,6 +290,7 @@ def _number_words(s: str) -> str:
         num = f"{v:g}"
         return (m.group("pre") if "pre" in m.groupdict() and m.group("pre") else "") + num
 
+    s = _MINUS.sub("-", s)
     s = _NW_AFTER_CMP.sub(repl, s)
     return _NW_BEFORE_UNIT.sub(repl, s)
 
@@ -440,9 +472,10 @@ class _Node:
             base = dataclasses.replace(antecedent, relations=())
         else:
             attrs, head = split_noun_phrase(self.words)
-            extra = tuple(a for a in self.states if a not in attrs)
-            phrase = " ".join((*extra, *self.words))  # "switched on lamp": attributes first, as the generator writes
-            base = Target(phrase, head, attrs + extra)
+            # The phrase is the noun phrase as written before any clause: "lamp" for "the lamp that is on".
+            base = Target(" ".join(self.words), head, attrs + tuple(a for a in self.states if a not in attrs))
+            if len(base.phrase) > 200 or len(head) > 100 or any(len(a) > 60 for a in base.attributes):
+                raise ParseError(f"could not read '{base.phrase[:80]}...' as one object: name it in fewer words")
         # A pronoun anchor refers to the previous goal; inside a nested phrase ("the desk, which has a lamp
         # on it") or with no previous goal it refers to the phrase itself, and adds nothing.
         rels = tuple(Relation(t, n.target(antecedent, depth + 1)) for t, n in self.relations
@@ -514,6 +547,9 @@ def _strip_phrases(tokens: list[str], index: dict, at_start: bool = True) -> tup
     for p in index.get(tokens[0] if at_start else tokens[-1], ()):
         n = len(p)
         if len(tokens) >= n and (tuple(tokens[:n]) if at_start else tuple(tokens[-n:])) == p:
+            rel = _relation_at(tokens, 0) if at_start else None
+            if rel is not None and rel[1] > n:  # ", next to the sofa" is a relation, not "next" + "to the sofa"
+                return tokens, False
             return (tokens[n:] if at_start else tokens[:-n]), True
     return tokens, False
 
@@ -551,7 +587,7 @@ def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
 
 def _relation_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     """(relation type, tokens used) when a relation phrase starts at tokens[i]."""
-    for phrase, rtype in _RELS:
+    for phrase, rtype in _RELS.get(tokens[i], ()) if i < len(tokens) else ():
         n = len(phrase)
         if tuple(tokens[i : i + n]) == phrase:
             return rtype, n
@@ -572,7 +608,7 @@ def _boundary_at(tokens: list[str], i: int) -> tuple[str, int, bool] | None:
     return r[0], j - i + r[1], tokens[j] in _ROOM_PREPS and r[1] <= 2
 
 
-_STATES = sorted(((tuple(k.split()), v) for k, v in L.STATE_PHRASES.items()), key=lambda kv: -len(kv[0]))
+_STATES = _by_first_word(L.STATE_PHRASES)
 _CLAUSE_END = frozenset("and or but yet not".split()) | L.RELATIVE_PRONOUNS | L.RELATIVE_CONTRACTED
 
 
@@ -586,7 +622,7 @@ def _state_at(tokens: list[str], j: int) -> tuple[str, str, int] | None:
     if j < len(tokens) and "-" in tokens[j] and tokens[j].replace("-", " ") in L.PARTICIPLE_STATES:
         written = tokens[j].replace("-", " ")
         return written, L.STATE_PHRASES[written], 1
-    for phrase, attr in _STATES:
+    for phrase, attr in _STATES.get(tokens[j], ()) if j < len(tokens) else ():
         if tuple(tokens[j : j + len(phrase)]) == phrase:
             return " ".join(phrase), attr, len(phrase)
     return None
@@ -596,18 +632,20 @@ def _post_attrs_at(tokens: list[str], i: int) -> tuple[list[str], int] | None:
     """Attributes written after a noun, from tokens[i]: (attributes, tokens used) or None.
 
     A relative clause ("that is switched on", "which is dark green", "that's open", "which is not lit", "that is
-    made of oak") or a bare participle ("switched on", "unplugged"). What follows must end the noun phrase, so
-    "that is on the table" is a relation and "that has red cushions" a 'with' anchor, not attributes.
+    made of oak", "which is ajar": after a copula any one to three plain words that end the phrase) or a bare
+    participle ("switched on", "unplugged"). What follows must end the noun phrase, so "that is on the table"
+    is a relation and "that has red cushions" a 'with' anchor, not attributes.
     """
     n = len(tokens)
-    j, clause, negated = i, False, False
+    j, clause, copula, negated = i, False, False, False
     if j < n and tokens[j] in L.RELATIVE_PRONOUNS:
         j, clause = j + 1, True
     elif j < n and tokens[j] in L.RELATIVE_CONTRACTED:
-        j, clause = j + 1, True
+        j, clause, copula = j + 1, True, True
     start = j
     while j < n and j - start < 4 and (tokens[j] in L.COPULA_WORDS or tokens[j] in L.NEGATED_COPULAS):
         negated = negated or tokens[j] in L.NEGATED_COPULAS
+        copula = copula or tokens[j] in L.TRUE_COPULAS  # "is", not "left" ("the front left speaker")
         j, clause = j + 1, True
     if j >= n:
         return None
@@ -628,9 +666,18 @@ def _post_attrs_at(tokens: list[str], i: int) -> tuple[list[str], int] | None:
     k = j
     while k < n and L.is_modifier(tokens[k], tokens[k + 1] if k + 1 < n else None):
         k += 1
+    if k > j and _np_end(tokens, k):
+        return list(split_noun_phrase([*tokens[j:k], "x"])[0]), k - i
+    if made or not copula or negated:
+        return None
+    # An adjective the lexicon does not know ("which is ajar", "that is slightly dusty"): open vocabulary.
+    k = j
+    while k < n and k - j < 3 and tokens[k].replace("-", "").replace("'", "").isalpha() and not _np_end(tokens, k) \
+            and tokens[k] not in L.DETERMINERS and tokens[k] not in L.FILLER_NOUNS and tokens[k] not in _DANGLING:
+        k += 1
     if k == j or not _np_end(tokens, k):
         return None
-    return list(split_noun_phrase([*tokens[j:k], "x"])[0]), k - i
+    return [" ".join(tokens[j:k])], k - i
 
 
 def _join_prenominal_states(tokens: list[str]) -> list[str]:
@@ -678,7 +725,20 @@ def _room_name(words: list[str]) -> str:
     return " ".join(words)
 
 
-_CONTINUATION = frozenset("which that who where whose".split()) | L.RELATIVE_CONTRACTED
+_CONTINUATION = frozenset("which who where whose is are was were".split()) | L.RELATIVE_CONTRACTED | L.NEGATED_COPULAS
+_MODALS = frozenset("should must will would can could might may does do did".split())
+
+
+def _continues(tokens: list[str]) -> bool:
+    """The segment only adds to the previous goal: ", which is on", "and is switched on", ", that should be ..."
+    ("that lamp" is a determiner and a noun)."""
+    if not tokens:
+        return False
+    if tokens[0] in _CONTINUATION:
+        return True
+    nxt = tokens[1] if len(tokens) > 1 else None
+    return tokens[0] == "that" and (nxt is None or nxt in L.COPULA_WORDS or nxt in L.NEGATED_COPULAS
+                                    or nxt in L.RELATIVE_LEADERS or nxt in _MODALS or _relation_at(tokens, 1) is not None)
 
 
 def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
@@ -696,7 +756,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     tokens, piece.led = _strip_leaders(tokens)
     tokens = _join_prenominal_states(tokens)
     # ", which should be hotter than 100 degrees", ", which is on,": constraints of the previous goal.
-    continuation = bool(tokens) and tokens[0] in _CONTINUATION
+    continuation = _continues(tokens)
     words, i = ([], 0) if continuation else _read_np(tokens, 0)
     top = _Node(words)
     current = top
@@ -725,6 +785,9 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
                                                       piece.room or top.relations or top.states):
         # "the coldest one", "the red one near the door": the head of the previous goal, elided.
         top.words = words[:-1]
+        if L.is_room_phrase(top.words):  # "the kitchen one": the one in the kitchen
+            piece.room = piece.room or _room_name(top.words)
+            top.words = []
         piece.node, piece.ellipsis = top, True
         return piece
     if not words or all(w in L.FILLER_NOUNS for w in words):

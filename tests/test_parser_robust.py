@@ -1,0 +1,340 @@
+"""The rule parser on phrasings the seen generator never writes: relative clauses and states, appositions and
+parentheticals, comparatives and superlatives in other words, number, unit and coordinate formats, other
+imperatives, sequencing and free-order phrases.
+
+The held-out set (tests/data/heldout_phrasings.jsonl) was written by hand before the parser was extended for
+it, with nouns the repository never uses; a goal agrees when its head, attributes (as strings), room,
+location, sensor constraints and top-level relations (type, anchor head) all match.
+"""
+
+import json
+import string
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from ragnav_jax.language.parser import parse_instruction, words_to_number
+from ragnav_jax.language.types import ParseError, validate_chain_dict
+
+HELDOUT = Path(__file__).resolve().parent / "data" / "heldout_phrasings.jsonl"
+
+
+def _close(a, b) -> bool:
+    if a is None or b is None:
+        return a is None and b is None
+    return abs(a - b) <= 1e-3 * max(1.0, abs(a), abs(b))
+
+
+def goal_differences(sg, g: dict) -> list[str]:
+    """Differences between a parsed subgoal and a held-out goal ([] when they agree)."""
+    t, out = sg.target, []
+    if t.head != g["head"]:
+        out.append(f"head {t.head!r} != {g['head']!r}")
+    if sorted(t.attributes) != sorted(g["attributes"]):
+        out.append(f"attributes {list(t.attributes)} != {g['attributes']}")
+    if (sg.room or None) != g["room"]:
+        out.append(f"room {sg.room!r} != {g['room']!r}")
+    loc = None if sg.location is None else (sg.location.x, sg.location.y)
+    if (loc is None) != (g["location"] is None) or (loc and not all(map(_close, loc, g["location"]))):
+        out.append(f"location {loc} != {g['location']}")
+    got = [(c.reading, c.comparator) for c in sg.sensors]
+    want = [(c["reading"], c["comparator"]) for c in g["sensors"]]
+    if got != want or not all(_close(a.value, b["value"]) for a, b in zip(sg.sensors, g["sensors"])):
+        out.append(f"sensors {[c.to_dict() for c in sg.sensors]} != {g['sensors']}")
+    rels = [(r.type, r.anchor.head) for r in t.relations]
+    if rels != [(r["type"], r["anchor_head"]) for r in g["relations"]]:
+        out.append(f"relations {rels} != {g['relations']}")
+    return out
+
+
+def row_differences(row: dict) -> list[str]:
+    try:
+        c = parse_instruction(row["text"])
+    except ParseError as e:
+        return [f"ParseError: {e}"]
+    out = [] if c.order == row["order"] else [f"order {c.order} != {row['order']}"]
+    if len(c.subgoals) != len(row["goals"]):
+        return out + [f"{len(c.subgoals)} goals != {len(row['goals'])}: {[s.target.head for s in c.subgoals]}"]
+    for i, (sg, g) in enumerate(zip(c.subgoals, row["goals"])):
+        out += [f"goal {i}: {d}" for d in goal_differences(sg, g)]
+    return out
+
+
+def _heldout() -> list[dict]:
+    return [json.loads(line) for line in HELDOUT.read_text().splitlines() if line.strip()]
+
+
+def test_heldout_set_is_well_formed_and_covers_unseen_nouns():
+    rows = _heldout()
+    assert len(rows) >= 60
+    for r in rows:
+        assert set(r) == {"text", "order", "goals"} and r["order"] in ("strict", "free") and r["goals"]
+        for g in r["goals"]:
+            assert set(g) == {"head", "attributes", "room", "location", "sensors", "relations"}
+    heads = {g["head"] for r in rows for g in r["goals"]}
+    assert {"ironing board", "drum kit", "x-ray viewer", "ping-pong table", "hi-fi speaker", "sewing machine"} <= heads
+
+
+def test_heldout_phrasings_agree():
+    # 32 / 101 before this parser version, 98 / 101 with it; the three left are compounds whose first word is
+    # a known adjective ("hot tub", "mint plant", "wood-fired oven"), read as attribute + head.
+    rows = _heldout()
+    failures = {r["text"]: d for r in rows if (d := row_differences(r))}
+    assert len(rows) - len(failures) >= 0.95 * len(rows), json.dumps(failures, indent=1)
+
+
+# ----------------------------------------------------------------------------------------------------
+# 1. Relative clauses and states
+
+
+def _goals(text: str) -> list[tuple]:
+    c = parse_instruction(text)
+    return [(s.target.head, sorted(s.target.attributes), s.room, [(r.type, r.anchor.head) for r in s.target.relations])
+            for s in c.subgoals]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Go to the hammock that is folded up.", [("hammock", ["folded"], None, [])]),
+        ("Find the heat press that's switched off beside the easel.", [("heat press", ["switched off"], None, [("beside", "easel")])]),
+        ("Find the heat press that is on the easel.", [("heat press", [], None, [("on", "easel")])]),  # relation
+        ("Find the heat press on the easel, which is on.", [("heat press", ["switched on"], None, [("on", "easel")])]),
+        ("Check the kiln that isn't lit, then the loom.", [("kiln", ["unlit"], None, []), ("loom", [], None, [])]),
+        ("Go to the workbench that is made of oak.", [("workbench", ["oak"], None, [])]),
+        ("Go to the trapdoor that is ajar.", [("trapdoor", ["ajar"], None, [])]),  # an adjective the lexicon lacks
+        ("Go to that hammock that is open.", [("hammock", ["open"], None, [])]),
+        ("Go to the plugged-in router and the switched on lava lamp.",
+         [("router", ["plugged in"], None, []), ("lava lamp", ["switched on"], None, [])]),
+        ("Go to the router switched off in the den.", [("router", ["switched off"], "den", [])]),
+        ("Go to the karaoke machine which is currently running and is plugged in.",
+         [("karaoke machine", ["plugged in", "running"], None, [])]),
+    ],
+)
+def test_relative_clauses_and_states(text, expected):
+    assert _goals(text) == expected
+
+
+def test_a_clause_describes_the_nearest_noun():
+    (sg,) = parse_instruction("Go to the lamp next to the futon that is grey.").subgoals
+    assert sg.target.attributes == () and sg.target.relations[0].anchor.attributes == ("grey",)
+    assert sg.target.phrase == "lamp"  # the phrase is the noun phrase before any clause
+
+
+# ----------------------------------------------------------------------------------------------------
+# 2. Appositions and parentheticals
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Go to the boombox, the silver one, then the kayak.", [("boombox", ["silver"], None, []), ("kayak", [], None, [])]),
+        ("Find the kayak (the one in the garage).", [("kayak", [], "garage", [])]),
+        ("Find the kayak (near the door) and the paddle.", [("kayak", [], None, [("near", "door")]), ("paddle", [], None, [])]),
+        ("Find the kayak, the kitchen one.", [("kayak", [], "kitchen", [])]),
+        ("Go to the workbench (wooden).", [("workbench", ["wooden"], None, [])]),
+        # a list, not an apposition: the second phrase clashes with the first (two colours, two relations)
+        ("Go to the red kayak, the blue one and the green one.",
+         [("kayak", ["red"], None, []), ("kayak", ["blue"], None, []), ("kayak", ["green"], None, [])]),
+        ("Go to the kayak, the one near the door, and the one near the window.",
+         [("kayak", [], None, [("near", "door")]), ("kayak", [], None, [("near", "window")])]),
+        # a verb starts a new goal
+        ("Go to the kayak, visit the blue one too.", [("kayak", [], None, []), ("kayak", ["blue"], None, [])]),
+    ],
+)
+def test_appositions_and_parentheticals(text, expected):
+    assert _goals(text) == expected
+
+
+def test_parenthesised_coordinates_stay_coordinates():
+    a, b = parse_instruction("Go to the kayak (2.5, -1) (the red one), then the paddle (the one at 3, 4).").subgoals
+    assert (a.location.x, a.location.y) == (2.5, -1.0) and a.target.attributes == ("red",)
+    assert (b.location.x, b.location.y) == (3.0, 4.0) and b.target.head == "paddle"
+
+
+# ----------------------------------------------------------------------------------------------------
+# 3. Comparatives and superlatives, 4. numbers and units
+
+
+@pytest.mark.parametrize(
+    "text, reading, comparator, value",
+    [
+        ("Go to the appliance that is the coldest.", "temperature_c", "min", None),
+        ("Find whichever succulent is greenest.", "ndvi", "max", None),
+        ("Go to the terrarium that reads the highest humidity of all.", "humidity_pct", "max", None),
+        ("Go to the hotplate that reads more than 60 degrees.", "temperature_c", "gt", 60.0),
+        ("Go to the hotplate running hotter than 60 °C.", "temperature_c", "gt", 60.0),
+        ("Go to the hotplate sitting at 60 degrees.", "temperature_c", "approx", 60.0),
+        ("Go to the humidor whose humidity exceeds 70 percent.", "humidity_pct", "gt", 70.0),
+        ("Go to the hotplate with a temperature no lower than 55°C.", "temperature_c", "ge", 55.0),
+        ("Go to the hotplate that is not above 20 degrees.", "temperature_c", "le", 20.0),
+        ("Go to the hotplate that is no warmer than 20 degrees.", "temperature_c", "le", 20.0),
+        ("Go to the fern with an NDVI greater than or equal to 0.5.", "ndvi", "ge", 0.5),
+        ("Go to the freezer whose temperature does not exceed minus ten degrees.", "temperature_c", "le", -10.0),
+        ("Go to the hotplate at sixty-five degrees.", "temperature_c", "approx", 65.0),
+        ("Go to the hotplate at 65 ºC.", "temperature_c", "approx", 65.0),  # masculine ordinal, not a degree sign
+        ("Go to the hotplate at 65 ˚C.", "temperature_c", "approx", 65.0),
+        ("Go to the hotplate at about 65 deg C.", "temperature_c", "approx", 65.0),
+        ("Go to the hotplate at 65 degrees Celsius.", "temperature_c", "approx", 65.0),
+        ("Go to the hotplate at 149 degrees Fahrenheit.", "temperature_c", "approx", 65.0),
+        ("Go to the humidor at 70%.", "humidity_pct", "approx", 70.0),
+        ("Go to the humidor at seventy per cent.", "humidity_pct", "approx", 70.0),
+        ("Go to the fern with an NDVI of 0.70.", "ndvi", "approx", 0.7),
+        ("Go to the fern with an NDVI of .7.", "ndvi", "approx", 0.7),
+    ],
+)
+def test_sensor_phrasings(text, reading, comparator, value):
+    (sg,) = parse_instruction(text).subgoals
+    assert len(sg.sensors) == 1 and sg.target.relations == () and sg.target.attributes == ()
+    c = sg.sensors[0]
+    assert (c.reading, c.comparator) == (reading, comparator)
+    assert value is None and c.value is None or abs(c.value - value) < 1e-3
+    assert sg.target.head in ("appliance", "succulent", "terrarium", "hotplate", "humidor", "fern", "freezer")
+
+
+def test_number_words():
+    assert words_to_number("sixty-five") == 65.0 and words_to_number("seventy") == 70.0
+    assert words_to_number("two hundred and five") == 205.0 and words_to_number("zero point seven") == 0.7
+
+
+# ----------------------------------------------------------------------------------------------------
+# 5. Coordinates
+
+
+@pytest.mark.parametrize(
+    "hint",
+    ["(3.5, 2)", "x=3.5, y=2", "at position 3.5, 2", "at the point x 3.5 y 2", "around (3.5 m, 2 m)",
+     "at x: 3.5 and y: 2", "at coordinates x=3.5; y=2", "at (3.5 | 2)", "at 3.5/2", "at [3.5; 2]",
+     "with an x coordinate of 3.5 and a y coordinate of 2", "at x = 3.5 m, y = 2 m", "located at (3.5 , 2.0)"],
+)
+def test_coordinate_formats(hint):
+    (sg,) = parse_instruction(f"Go to the hat stand {hint}.").subgoals
+    assert sg.target.head == "hat stand" and sg.target.relations == ()
+    assert (sg.location.x, sg.location.y) == (3.5, 2.0)
+
+
+@pytest.mark.parametrize("text", ["Go to the hat stand at (3.5 | abc).", "Go to the hat stand at x=3.5 y=abc."])
+def test_unreadable_coordinates_still_raise(text):
+    with pytest.raises(ParseError, match="coordinates"):
+        parse_instruction(text)
+
+
+# ----------------------------------------------------------------------------------------------------
+# 6. Imperatives, sequencing, free order
+
+
+@pytest.mark.parametrize(
+    "text, heads, order",
+    [
+        ("Your job is to reach the hat stand.", ["hat stand"], "strict"),
+        ("I'd love it if you could stop at the hat stand.", ["hat stand"], "strict"),
+        ("Swing past the hat stand, then make a stop at the umbrella stand.", ["hat stand", "umbrella stand"], "strict"),
+        ("Head for the hat stand and then pop over to the shoe horn.", ["hat stand", "shoe horn"], "strict"),
+        ("Could you pop over to the hat stand?", ["hat stand"], "strict"),
+        ("Start off at the hat stand; after that the shoe horn; wrap up with the key hook.",
+         ["hat stand", "shoe horn", "key hook"], "strict"),
+        ("The hat stand comes first, then the shoe horn.", ["hat stand", "shoe horn"], "strict"),
+        ("Go to the hat stand. Once you're done there, the shoe horn.", ["hat stand", "shoe horn"], "strict"),
+        ("Before anything else, visit the hat stand, and then the shoe horn.", ["hat stand", "shoe horn"], "strict"),
+        ("Visit the shoe horn after the hat stand.", ["hat stand", "shoe horn"], "strict"),
+        ("Your first stop is the hat stand; your final stop is the shoe horn.", ["hat stand", "shoe horn"], "strict"),
+        ("The hat stand and the shoe horn \u2014 the order is your call.", ["hat stand", "shoe horn"], "free"),
+        ("Visit the hat stand and the shoe horn in any sequence you like.", ["hat stand", "shoe horn"], "free"),
+        ("Visit the hat stand and the shoe horn in whatever order works best.", ["hat stand", "shoe horn"], "free"),
+        ("The hat stand and the shoe horn; you choose the order.", ["hat stand", "shoe horn"], "free"),
+    ],
+)
+def test_imperatives_and_sequencing(text, heads, order):
+    c = parse_instruction(text)
+    assert [s.target.head for s in c.subgoals] == heads and c.order == order
+    assert all(not s.target.attributes and not s.target.relations for s in c.subgoals)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Properties over nouns the parser has never seen
+
+_SYLLABLES = [c + v for c in "bdfgklmnprstvz" for v in "aeiou"]
+_WORD = st.lists(st.sampled_from(_SYLLABLES), min_size=2, max_size=3).map("".join)
+_NOUN = st.lists(_WORD, min_size=1, max_size=2).map(" ".join)
+_STATES = [("switched on", "switched on"), ("switched off", "switched off"), ("turned on", "turned on"),
+           ("turned off", "turned off"), ("plugged in", "plugged in"), ("unplugged", "unplugged"), ("lit", "lit"),
+           ("unlit", "unlit"), ("running", "running"), ("idle", "idle"), ("folded", "folded"),
+           ("unfolded", "unfolded"), ("open", "open"), ("closed", "closed"), ("empty", "empty"), ("full", "full"),
+           ("on", "switched on"), ("off", "switched off")]
+_CLAUSES = ["that is {}", "which is {}", "that's {}", "that is currently {}", "which is still {}", "who is {}"]
+
+
+def _plain_head(noun: str) -> bool:
+    """The noun alone reads back as itself (random syllables can spell a closed-class word)."""
+    try:
+        (sg,) = parse_instruction(f"go to the {noun}").subgoals
+    except (ParseError, ValueError):
+        return False
+    return sg.target.head == noun and not sg.target.attributes
+
+
+_FAST = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+@_FAST
+@given(_NOUN, _NOUN, st.sampled_from(_STATES), st.sampled_from(_CLAUSES), st.booleans(), st.booleans())
+def test_relative_clause_state_after_any_noun(noun, anchor, state, clause, commas, relation):
+    assume(_plain_head(noun) and _plain_head(anchor) and noun != anchor)
+    written, attr = state
+    rel = f" next to the {anchor}" if relation else ""
+    text = f"Go to the {noun}, {clause.format(written)},{rel} then the {anchor}." if commas else \
+        f"Go to the {noun} {clause.format(written)}{rel}, then the {anchor}."
+    a, b = parse_instruction(text).subgoals
+    assert (a.target.head, a.target.attributes) == (noun, (attr,))
+    assert [(r.type, r.anchor.head) for r in a.target.relations] == ([("next_to", anchor)] if relation else [])
+    assert (b.target.head, b.target.attributes) == (anchor, ())
+
+
+@_FAST
+@given(_NOUN, _NOUN)
+def test_on_before_a_noun_is_a_relation(noun, anchor):
+    assume(_plain_head(noun) and _plain_head(anchor) and noun != anchor)
+    (sg,) = parse_instruction(f"find the {noun} that is on the {anchor}").subgoals
+    assert sg.target.head == noun and sg.target.attributes == ()
+    assert [(r.type, r.anchor.head) for r in sg.target.relations] == [("on", anchor)]
+
+
+@_FAST
+@given(_NOUN, st.sampled_from(["black", "oak", "dark green", "striped"]), st.sampled_from(["{}, the {} one,", "{} (the {} one)"]))
+def test_apposition_after_any_noun_is_one_goal(noun, attr, form):
+    assume(_plain_head(noun))
+    c = parse_instruction("Go to the " + form.format(noun, attr) + " then the sofa.")
+    assert [(s.target.head, s.target.attributes) for s in c.subgoals] == [(noun, (attr,)), ("sofa", ())]
+
+
+_COORD = st.decimals(min_value=-50, max_value=50, places=1).map(float)
+
+
+@_FAST
+@given(_NOUN, _COORD, _COORD, st.sampled_from(["({x}, {y})", "x={x}, y={y}", "at position {x}, {y}", "at ({x} m, {y} m)",
+                                                "at x: {x} and y: {y}", "({x} | {y})", "at the point x {x} y {y}"]))
+def test_coordinates_after_any_noun(noun, x, y, form):
+    assume(_plain_head(noun))
+    (sg,) = parse_instruction(f"go to the {noun} " + form.format(x=f"{x:g}", y=f"{y:g}")).subgoals
+    assert sg.target.head == noun and (sg.location.x, sg.location.y) == (x, y)
+
+
+_SOUP = st.sampled_from(
+    (string.ascii_lowercase[:6] + " ").split() + "go to the a lamp that is which that's isn't not switched turned on off "
+    "plugged in unplugged lit running open one ones , ( ) [ ] ; . - — and then the order is your call whichever "
+    "hottest exceeds no lower than above 60 degrees ºc deg c per cent % ndvi .7 x= y= 3.5 / | m minus made of "
+    "your job is to pop over make a stop comes first once you're done there before anything else ajar being".split()
+)
+
+
+@settings(max_examples=800, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(_SOUP, max_size=25))
+def test_fuzz_new_vocabulary_only_raises_parse_error(words):
+    try:
+        c = parse_instruction(" ".join(words))
+    except ParseError:
+        return
+    validate_chain_dict(c.to_dict())
+    assert all(s.target.head.strip() for s in c.subgoals)
