@@ -39,7 +39,7 @@ def split_table(folder: Path) -> dict[str, dict]:
         top = [x for r in rs for x in r["retrieval_top1"] if x is not None]
         lo, hi = wilson_interval(k, n)
         out[m] = {"episodes": n, "success": k / max(n, 1), "success_ci95": [round(lo, 3), round(hi, 3)],
-                  "top1": sum(top) / max(len(top), 1),
+                  "top1": sum(top) / len(top) if top else None,  # None: no retrieval (ETPNav-style)
                   "tls_success": sum(r["success"] for r in tls) / max(len(tls), 1), "tls_episodes": len(tls),
                   "wrong_declarations": sum(not d["correct"] for r in rs for d in r["declarations"])}
         if m != BASE and BASE in rows:
@@ -66,7 +66,8 @@ def main(argv=None) -> int:
         for name, r in res.items():
             f = r[m]
             c = f.get("vs_ragnav")
-            row += [f"{f['success']:.3f} [{f['success_ci95'][0]:.2f}, {f['success_ci95'][1]:.2f}]", f"{f['top1']:.3f}",
+            row += [f"{f['success']:.3f} [{f['success_ci95'][0]:.2f}, {f['success_ci95'][1]:.2f}]",
+                    "-" if f["top1"] is None else f"{f['top1']:.3f}",
                     f"{f['tls_success']:.3f}", str(f["wrong_declarations"]),
                     "-" if c is None else f"{c['success_wins']} / {c['success_losses']} ({c['success_p']:.2g})"]
         table.append(row)

@@ -1,25 +1,31 @@
 """Open-vocabulary verification for the reflection: is a perceived object the subgoal's target?
 
-    verifier = Verifier.build(scenes, bank, embedder, cfg)         # thresholds from data/fitted.json
-    verdicts = verifier.table(episodes, subgoals)                   # [e][g] -> (O,) bool over scene objects
+    verifier = Verifier.build(embedder, cfg)                        # thresholds from data/fitted.json
+    table = verdict_table(verifier, bank, scenes, episodes, subgoals)  # [e][g] -> (O,) bool over scene objects
 
-What the robot perceives of an object is what its captioner emits at close range (a name and a
-description, with seeded perception noise: `perceive`), its sensor readings, and positions (its own,
-the coordinate hint's, and those of the anchors its memory recorded). A subgoal is checked against that:
+What the robot perceives of an object is what its captioner emits at close range (`looks` looks, each
+a name and a description with seeded perception noise: `perceive`), its sensor readings, and positions
+(its own, the coordinate hint's, and those of the anchors its memory recorded). A subgoal is checked
+against that:
 
-- name: the target's head noun against the names of the object (what the robot calls it now, and
-  what its memory called the same instance) through the sentence encoder: an exact match passes; otherwise the cosine must reach `tau_head` and lie within `head_margin` of the best
-  match among the names the memory recorded in the scene (so "chair" keeps to the chair when the house
-  has one and an office chair, while "couch" still finds the sofa and "appliance" the fridge);
-- attributes: said in the description (whole words; a hyphenated value such as "gold-framed" by its
-  first part), or at least not contradicted: no descriptor of the description is of the same kind
-  (cosine >= `tau_kind`: "switched off" against a wanted "switched on", "walnut" against "oak");
+- name: the target's head noun against the object's names (what the robot calls it now, and every
+  alias its memory learnt for it: `name_classes`). When the house's own vocabulary holds the head noun,
+  only objects known by that word pass ("chair" is not the office chair); otherwise through the
+  sentence encoder: the cosine must reach `tau_head` and lie within `head_margin` of the best match
+  among the names recorded in the scene ("couch" finds the sofa, "appliance" the fridge, "aquarium"
+  the fish tank);
+- attributes and states: said in one of the looks (whole words; a hyphenated value such as
+  "gold-framed" by its first part): at close range, an attribute nobody sees is not there;
 - room: the room phrase against a description of every room (the room type the forest's summariser
-  infers from what the memory recorded there, and those names), within `room_margin` of the
-  best-matching room, so room names no prototype knows still work;
-- structured checks as before: coordinate hints, sensor thresholds and superlatives (ranked among the
-  recorded instances that pass the same checks), relations by position against recorded anchors that
-  pass the name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
+  infers from what the memory recorded there, and those names), within `room_margin` of the best
+  match, so room names no prototype knows still work;
+- structured checks: coordinate hints, sensor thresholds and superlatives (ranked among the recorded
+  instances that pass the same checks), relations by position against recorded anchors that pass the
+  name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
+
+RAGNav's pre-check (`contradicts`) reads the memory's own, distant descriptions instead, where
+attributes are often left unsaid: there an attribute rules an instance out only when another value of
+its kind is said (cosine >= `tau_kind` to a descriptor: "walnut" against a wanted "oak").
 
 Nothing here reads a ground-truth category or attribute: only the captioner's words. The thresholds are
 fitted on the seen split only (`fit_verifier`, `ragnav fit-verifier`) and kept, with where they came
