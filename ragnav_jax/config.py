@@ -117,9 +117,9 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
-    split: str = "seen"  # seen: the generator's own names and sentence templates | unseen_dev: other names (the
-    # world's unseen synonyms and hypernyms) and the sentence structures of language/phrasings.py, which the
-    # parser may be developed against | unseen: the same names, held-out structures (phrasings_heldout.py)
+    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev (language/phrasings.py,
+    # which the parser may be developed against) | unseen (phrasings_heldout.py, held out from the parser's
+    # authors); the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):
         for k in ("text", "text_location", "text_location_sensor"):

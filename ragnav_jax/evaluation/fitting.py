@@ -82,7 +82,7 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
         best = np.maximum(v.cos(heads, vocab).max(1), c.max(1))
         for i, head in enumerate(heads):
             for j, o in enumerate(scene.objects):
-                head_rows.append((c[i, j], best[i] - c[i, j], head in names[j], category_matches(o.category, head),
+                head_rows.append((c[i, j], best[i] - c[i, j], head in names[j], category_matches(o.category, head, (SYNONYMS, HYPERNYMS)),
                                   head in vocab))
         for o, p in zip(scene.objects, ps):
             attrs = dict(o.attributes)

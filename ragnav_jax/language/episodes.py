@@ -20,6 +20,7 @@ generator seeded by (seed, scene name, modality), so a seed gives the same file.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 import math
 import zlib
@@ -82,14 +83,17 @@ HYPERNYMS: dict[str, frozenset[str]] = {
 }
 
 
-def names_for(split: str) -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
-    """(synonyms, hypernyms) people use for a split's categories: the seen ones above, or the world's
-    unseen-split vocabulary (world/vocabulary.py UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS)."""
-    if split == "seen":
-        return SYNONYMS, HYPERNYMS
+@functools.cache
+def names() -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
+    """(synonyms, hypernyms) people use: the seen ones above and the world's unseen-split vocabulary
+    (world/vocabulary.py UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS). The catalogues are disjoint, so a house's
+    categories decide which apply (seen houses are described exactly as before the unseen ones existed)."""
     from ragnav_jax.world.vocabulary import UNSEEN_HYPERNYMS, UNSEEN_SYNONYMS
 
-    return UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS
+    hyp = dict(HYPERNYMS)
+    for k, cats in UNSEEN_HYPERNYMS.items():
+        hyp[k] = hyp.get(k, frozenset()) | cats
+    return {**SYNONYMS, **UNSEEN_SYNONYMS}, hyp
 
 
 FRAMES = {"gold": "gold-framed", "black": "black-framed", "wooden": "wooden-framed", "aluminium": "aluminium-framed",
@@ -244,13 +248,13 @@ class SceneFacts:
     by_head: dict = dataclasses.field(default_factory=dict)  # head word(s) -> objects it names
     simple: dict = dataclasses.field(default_factory=dict)  # object id -> head(+attribute) Targets fitting only it
     loose: dict = dataclasses.field(default_factory=dict)  # object id -> every head(+attribute) Target fitting it
-    split: str = "seen"  # whose names (synonyms, hypernyms) descriptions use: names_for(split)
+    split: str = "seen"  # the sentence templates descriptions are written with (EpisodesConfig.split)
 
     @classmethod
     def build(cls, scene: Scene, cfg: EpisodesConfig) -> SceneFacts:
-        syn, hyp = names_for(cfg.split)
+        syn, hyp = names()
         heads = {h for o in scene.objects for h in (o.category, *syn.get(o.category, ()))} | set(hyp)
-        by_head = {h: tuple(o for o in scene.objects if head_matches(o, h, cfg.split)) for h in heads}
+        by_head = {h: tuple(o for o in scene.objects if head_matches(o, h)) for h in heads}
         facts = cls(scene, cfg.near_distance, cfg.location_radius, {r.id: r.type for r in scene.rooms},
                     {o.id: attribute_phrases(o) for o in scene.objects}, by_head, split=cfg.split)
         loose = {o.id: tuple(_simple_targets(facts, o, unique=False)) for o in scene.objects}
@@ -282,14 +286,15 @@ def attribute_phrases(o: SceneObject) -> tuple[str, ...]:
     return tuple(out)
 
 
-def category_matches(category: str, head: str, split: str = "seen") -> bool:
-    """A head noun names this category: the category itself, a synonym of it, or a hypernym of it."""
-    syn, hyp = names_for(split)
+def category_matches(category: str, head: str, vocab: tuple[dict, dict] | None = None) -> bool:
+    """A head noun names this category: the category itself, a synonym of it, or a hypernym of it
+    (vocab: (synonyms, hypernyms), by default `names()`)."""
+    syn, hyp = vocab or names()
     return head == category or head in syn.get(category, ()) or category in hyp.get(head, ())
 
 
-def head_matches(o: SceneObject, head: str, split: str = "seen") -> bool:
-    return category_matches(o.category, head, split)
+def head_matches(o: SceneObject, head: str) -> bool:
+    return category_matches(o.category, head)
 
 
 def attrs_match(wanted: Sequence[str], has: Sequence[str]) -> bool:
@@ -329,7 +334,7 @@ def relation_holds(rtype: str, o: SceneObject, a: SceneObject, near: float) -> b
 def resolve_target(facts: SceneFacts, t: Target) -> list[SceneObject]:
     named = facts.by_head.get(t.head)
     if named is None:
-        named = [o for o in facts.scene.objects if head_matches(o, t.head, facts.split)]
+        named = [o for o in facts.scene.objects if head_matches(o, t.head)]
     out = [o for o in named if attrs_match(t.attributes, facts.attrs[o.id])] if t.attributes else list(named)
     for r in t.relations:
         anchors = resolve_target(facts, r.anchor)
@@ -385,8 +390,8 @@ def _expressible(head: str, attrs: tuple[str, ...]) -> bool:
     return got_head == head and " ".join(got_attrs).split() == " ".join(attrs).split()
 
 
-def _heads(o: SceneObject, split: str = "seen") -> list[str]:
-    return [h for h in (o.category, *names_for(split)[0].get(o.category, ())) if _expressible(h, ())]
+def _heads(o: SceneObject) -> list[str]:
+    return [h for h in (o.category, *names()[0].get(o.category, ())) if _expressible(h, ())]
 
 
 def _attr_sets(facts: SceneFacts, o: SceneObject) -> list[tuple[str, ...]]:
@@ -397,7 +402,7 @@ def _attr_sets(facts: SceneFacts, o: SceneObject) -> list[tuple[str, ...]]:
 def _simple_targets(facts: SceneFacts, o: SceneObject, unique: bool = True) -> list[Target]:
     """Head (+ attributes) descriptions of o, unique in the scene when `unique`."""
     out = []
-    for h in _heads(o, facts.split):
+    for h in _heads(o):
         for attrs in _attr_sets(facts, o):
             if not _expressible(h, attrs):
                 continue
@@ -436,7 +441,7 @@ def _anchor_options(facts: SceneFacts, o: SceneObject, cfg: EpisodesConfig, dept
     """
     out = []
     for a in facts.scene.objects:
-        if a.id == o.id or a.id in exclude or a.category == o.category or set(_heads(a, facts.split)) & set(_heads(o, facts.split)):
+        if a.id == o.id or a.id in exclude or a.category == o.category or set(_heads(a)) & set(_heads(o)):
             continue
         types = [t for t in REL_TEXT if relation_holds(t, o, a, cfg.near_distance)]
         if not types:
@@ -444,10 +449,10 @@ def _anchor_options(facts: SceneFacts, o: SceneObject, cfg: EpisodesConfig, dept
         anchors = list(facts.simple[a.id])
         if not anchors and depth > 1:
             for rt2, t2 in _anchor_options(facts, a, cfg, depth - 1, exclude | {o.id}):
-                if any(head_matches(o, h, facts.split) for h in _heads(o, facts.split) if h == t2.head):
+                if any(head_matches(o, h) for h in _heads(o) if h == t2.head):
                     continue
                 if rt2 in ("with", "on", "near", "next_to"):
-                    for h in _heads(a, facts.split):
+                    for h in _heads(a):
                         nested = _target(h, (), (Relation(rt2, t2),))
                         if [x.id for x in resolve_target(facts, nested)] == [a.id]:
                             anchors.append(nested)
@@ -473,7 +478,7 @@ def describe_text(facts: SceneFacts, o: SceneObject, rng: np.random.Generator, c
     want_rel = rng.uniform() < cfg.relation_prob
     if want_rel or not (simple or room_opts):
         for rtype, anc in _anchor_options(facts, o, cfg, depth=2):
-            for h in _heads(o, facts.split):
+            for h in _heads(o):
                 for attrs in ((),) + tuple((a,) for a in facts.attrs[o.id][:1]):
                     if not _expressible(h, attrs):
                         continue
@@ -502,7 +507,7 @@ def _hint_text(rng, x: str, y: str) -> str:
 
 def describe_location(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig) -> tuple[Subgoal, str] | None:
     """The category name plus a coordinate hint, where the name alone has distractors."""
-    heads = _heads(o, facts.split)
+    heads = _heads(o)
     if not heads:
         return None
     head = heads[0] if len(heads) == 1 or rng.uniform() >= cfg.synonym_prob else _pick(rng, heads[1:])
@@ -613,7 +618,7 @@ def describe_sensor(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig)
     if not readings:
         return None
     options = []
-    heads = _heads(o, facts.split) + [h for h, cats in names_for(facts.split)[1].items() if o.category in cats]
+    heads = _heads(o) + [h for h, cats in names()[1].items() if o.category in cats]
     room_type = facts.room_type[o.room]
     for rd, val in readings:
         tol = APPROX_TOL[rd]
@@ -658,14 +663,20 @@ def describe_sensor(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig)
 def render_goal(rng, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
     """'the warmest appliance in the kitchen next to the sink at (3.5, 2.0)' from a description."""
 
+    from ragnav_jax.language.phrasings import is_state
+
+    def state(t: Target) -> str:  # states read after the noun ("the lamp that is switched on")
+        st = [a for a in t.attributes if is_state(a)]
+        return (" that is " + " and ".join(st)) if st else ""
+
     def np_text(t: Target) -> str:
-        s = "the " + t.phrase
+        s = "the " + t.phrase + state(t)
         for r in t.relations:
             s += f" {_pick(rng, REL_TEXT[r.type])} {np_text(r.anchor)}"
         return s
 
     t = sg.target
-    head_np = "the " + (f"{prefix} " if prefix else "") + t.phrase
+    head_np = "the " + (f"{prefix} " if prefix else "") + t.phrase + state(t)
     rel = "".join(f" {_pick(rng, REL_TEXT[r.type])} {np_text(r.anchor)}" for r in t.relations)
     room = f" in the {sg.room}" if sg.room else ""
     parts = head_np + (room + rel if rng.uniform() < 0.6 else rel + room)
