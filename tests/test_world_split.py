@@ -9,7 +9,7 @@ import pytest
 
 from ragnav_jax.config import ROOM_TYPES, WorldConfig, load_config
 from ragnav_jax.errors import UserError
-from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, CaptionNoise, read_phrase, template_caption
+from ragnav_jax.memory.captioner import ADJECTIVE_KEYS, SYNONYMS, CaptionNoise, find_words, template_caption
 from ragnav_jax.memory.keyposes import NodeObservation
 from ragnav_jax.world.generator import generate_scene
 from ragnav_jax.world.geometry import reachability
@@ -119,10 +119,11 @@ def test_unseen_captions(unseen_scenes):
     cap = template_caption(s, obs, 0, 0, noise)
     assert len(cap.phrases) == len(s.objects)
     states = 0
-    for oi, phrase in zip(cap.objects, cap.phrases):
+    for oi, label, phrase in zip(cap.objects, cap.labels, cap.phrases):
         o = s.objects[oi]
-        cat, pre, post = read_phrase(phrase)
-        assert cat in UNSEEN_CATALOG, phrase  # unseen names (or their captioner synonyms) are read back
+        assert o.category in UNSEEN_CATALOG and label in SYNONYMS.get(o.category, (o.category,)), phrase
+        m = find_words(label, phrase)
+        pre, post = phrase[: m.start()], phrase[m.end():]
         if "state" in o.attrs:
             assert post.startswith(f" that is {o.attrs['state']}"), phrase
             states += 1

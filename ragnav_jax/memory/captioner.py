@@ -10,7 +10,6 @@ OpenAI-compatible chat endpoint (`llm.base_url`) describes the same detections (
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 import re
 import zlib
@@ -129,27 +128,6 @@ def canonical(label: str) -> str:
 def find_words(needle: str, text: str) -> re.Match | None:
     """`needle` in `text` as whole words (a hyphen joins words: 'white' is not in 'white-painted')."""
     return re.search(r"(?<![\w-])" + re.escape(needle) + r"(?![\w-])", text)
-
-
-@functools.cache
-def _surface_forms() -> tuple[tuple[str, str], ...]:
-    """(surface form, category) pairs a template caption may use, longest first."""
-    from ragnav_jax.world.vocabulary import CATALOG, PLANTS, PLANTS_UNSEEN, UNSEEN_CATALOG
-
-    names = (*CATALOG, *PLANTS, *UNSEEN_CATALOG, *PLANTS_UNSEEN)
-    pairs = {(c, c) for c in names} | {(f.lower(), c) for c, forms in SYNONYMS.items() for f in forms}
-    return tuple(sorted(pairs, key=lambda p: -len(p[0])))
-
-
-def read_phrase(phrase: str) -> tuple[str | None, str, str]:
-    """The inverse of a caption phrase: (category, text before its name, text after it), lower case;
-    category None when no known name occurs ('grey radiator at about 48 °C' -> radiator, 'grey ', ...)."""
-    low = phrase.lower()
-    for form, cat in _surface_forms():
-        m = find_words(form, low)
-        if m:
-            return cat, low[: m.start()], low[m.end():]
-    return None, low, ""
 
 
 @dataclasses.dataclass(frozen=True)
