@@ -201,22 +201,24 @@ class Verifier:
         return ok
 
     def rooms_match(self, room: str, descs: dict[str, str]) -> set[str]:
-        """Room ids whose description matches the room phrase (within room_margin of the best, and every room
-        the summariser gives the same type as one of those: a house may have two bedrooms); rooms with no
-        recorded names are unknown and pass."""
+        """Room ids whose description matches the room phrase (within room_margin of the best; when the phrase
+        is the type the summariser gave the best room, every room of that type too: a house may have two
+        bedrooms); rooms with no recorded names are unknown and pass."""
         known = {r: d for r, d in descs.items() if d}
         out = set(descs) - set(known)
         if known:
             ids = list(known)
             c = self.cos([room], [known[r] for r in ids])[0]
             best = {r for r, x in zip(ids, c) if x >= c.max() - self.p.room_margin}
-            types = {known[r].split(":", 1)[0] for r in best}
-            out |= {r for r in ids if r in best or known[r].split(":", 1)[0] in types}
+            named = room in {known[r].split(":", 1)[0] for r in best}
+            out |= {r for r in ids if r in best or (named and known[r].split(":", 1)[0] == room)}
         return out
 
     # -- the verdict table
-    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
-        """What the robot's memory holds of a scene: recorded objects, names, room descriptions."""
+    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]],
+                   unknown_type: str | None = None) -> SceneView:
+        """What the robot's memory holds of a scene: recorded objects, names, room descriptions (unknown_type:
+        a room type the summariser is made not to know, as fitting does)."""
         vocab = sorted({n.lower() for ns in recorded_names.values() for n in ns})
         aliases = alias_sets(recorded_names)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
@@ -226,7 +228,8 @@ class Verifier:
                     by_room[scene.objects[oi].room].append(n.lower())
         counts = {r: Counter(canonical(n) for o, ns in recorded_names.items() if scene.objects[o].room == r for n in ns)
                   for r in by_room}
-        descs = {r: f"{_summariser().infer_type(counts[r], 2)[0]}: a room with " + ", ".join(ns[:12]) if ns else ""
+        descs = {r: f"{_summariser().infer_type(counts[r], 2, unknown_type)[0]}: a room with " + ", ".join(ns[:12])
+                 if ns else ""
                  for r, ns in by_room.items()}
         return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), descs, aliases)
 
