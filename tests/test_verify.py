@@ -57,12 +57,17 @@ def test_a_name_the_house_holds_exactly_wins_over_a_near_one(minilm):
     assert got.tolist() == [True, False]  # no plain chair in the house: the encoder decides
 
 
-def test_rooms_by_description_not_by_label(minilm):
+def test_rooms_by_label_else_by_recorded_names(minilm, apartment):
+    from ragnav_jax.evaluation.verify import SceneView
+
     v, _ = minilm
-    descs = {"r1": "a room with a drum kit, a music stand, a cello", "r2": "a room with a crib, a changing table",
-             "r3": ""}
-    assert v.rooms_match("music room", descs) == {"r1", "r3"}  # r3 recorded nothing: unknown, not excluded
-    assert "r2" in v.rooms_match("nursery", descs) and "r1" not in v.rooms_match("nursery", descs)
+    names = {"r1": ("drum kit", "music stand", "cello"), "r2": ("workbench", "toolbox", "table saw"), "r3": (),
+             "r4": ("bed", "wardrobe"), "r5": ("bed", "nightstand")}
+    view = SceneView(apartment, (), (), names, {"r1": "open area", "r2": "open area", "r4": "bedroom",
+                                                 "r5": "bedroom"}, {})
+    assert v.rooms_match("music room", view) == {"r1", "r3"}  # r3 recorded nothing: unknown, not excluded
+    assert v.rooms_match("workshop", view) == {"r2", "r3"}
+    assert v.rooms_match("bedroom", view) == {"r4", "r5", "r3"}  # the summariser's own label: both bedrooms
 
 
 def test_verdicts_on_the_apartment_read_no_ground_truth_category(minilm, apartment):

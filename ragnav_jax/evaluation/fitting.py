@@ -7,8 +7,8 @@ evaluation houses), each object perceived `looks` times by the captioner (standi
 views of it: its names and aliases). Labels come from
 the seen generator's own vocabulary: a head noun names an object when `category_matches` says so
 (category, synonym or hypernym); an attribute is contradicted when the description says another option
-of the same attribute kind; a room phrase names the rooms of that type (with that type left out of the
-summariser's prototypes, so the margin holds for room names it does not know). Each threshold is the grid
+of the same attribute kind; a room phrase names the rooms of that type (scored by the encoder as if
+the summariser did not know the type, so the margin holds for room names it does not know). Each threshold is the grid
 value with the best balanced accuracy. The unseen catalogue is never read (a test checks this).
 """
 
@@ -96,13 +96,11 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
                     x = float(v.cos([w], ds).max()) if ds else -1.0
                     kind_rows.append((x, kind in attrs and said(attrs[kind], p.text)))
         rooms = {r.id: r for r in scene.rooms}
-        ids = [r for r in rooms if view.room_desc[r]]
-        for t in sorted({r.type for r in scene.rooms}):  # each type left out of the summariser's prototypes, so
-            # the margin is calibrated for room names it does not know (a seen type would be matched by its label)
-            blind = v.scene_view(scene, list(recorded), recorded, unknown_type=t)
-            sims = v.cos([t], [blind.room_desc[r] for r in ids])[0]
-            for r, x in zip(ids, sims):
-                room_rows.append((sims.max() - x, rooms[r].type == t))
+        for t in sorted({r.type for r in scene.rooms}):  # as a room name the summariser does not know (a seen
+            # type would be matched by its label): the margin is calibrated for the encoder's room scores
+            sc = v.room_scores(t, view.room_names)
+            top = max(sc.values())
+            room_rows += [(top - x, rooms[r].type == t) for r, x in sc.items()]
     return (np.array(head_rows, np.float64).reshape(-1, 5), np.array(kind_rows, np.float64).reshape(-1, 2),
             np.array(room_rows, np.float64).reshape(-1, 2))
 

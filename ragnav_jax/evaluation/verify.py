@@ -16,9 +16,9 @@ against that:
   the fish tank);
 - attributes and states: said in one of the looks (whole words; a hyphenated value such as
   "gold-framed" by its first part): at close range, an attribute nobody sees is not there;
-- room: the room phrase against a description of every room (the room type the forest's summariser
-  infers from what the memory recorded there, and those names), within `room_margin` of the best
-  match, so room names no prototype knows still work;
+- room: the rooms the forest's summariser labels with exactly the room phrase; for a room name no
+  prototype knows, the rooms whose recorded names fit the phrase through the encoder within
+  `room_margin` of the best (`room_scores`);
 - structured checks: coordinate hints, sensor thresholds and superlatives (ranked among the recorded
   instances that pass the same checks), relations by position against recorded anchors that pass the
   name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
@@ -200,25 +200,27 @@ class Verifier:
             ok &= np.array([any(said(a, p.text) for p in ls) for ls in looks], bool)
         return ok
 
-    def rooms_match(self, room: str, descs: dict[str, str]) -> set[str]:
-        """Room ids whose description matches the room phrase (within room_margin of the best; when the phrase
-        is the type the summariser gave the best room, every room of that type too: a house may have two
-        bedrooms); rooms with no recorded names are unknown and pass."""
-        known = {r: d for r, d in descs.items() if d}
-        out = set(descs) - set(known)
-        if known:
-            ids = list(known)
-            c = self.cos([room], [known[r] for r in ids])[0]
-            best = {r for r, x in zip(ids, c) if x >= c.max() - self.p.room_margin}
-            named = room in {known[r].split(":", 1)[0] for r in best}
-            out |= {r for r in ids if r in best or (named and known[r].split(":", 1)[0] == room)}
-        return out
+    def room_scores(self, room: str, names: dict[str, Sequence[str]]) -> dict[str, float]:
+        """Room id -> how well the room phrase fits the names the memory recorded there (mean cosine of its
+        three best-matching names; chosen on the seen split, against whole-description embeddings)."""
+        return {r: float(np.sort(self.cos([room], list(ns))[0])[::-1][:3].mean()) for r, ns in names.items() if ns}
+
+    def rooms_match(self, room: str, view: SceneView) -> set[str]:
+        """Room ids the room phrase may mean: the rooms the forest's summariser labels with exactly that type
+        when there are any (a house may have two bedrooms); otherwise the rooms whose recorded names fit it
+        within room_margin of the best (`room_scores`), so room names no prototype knows work. Rooms with no
+        recorded names are unknown and pass."""
+        out = {r for r, ns in view.room_names.items() if not ns}
+        labelled = {r for r, t in view.room_type.items() if t == room}
+        if labelled:
+            return out | labelled
+        sc = self.room_scores(room, view.room_names)
+        top = max(sc.values(), default=0.0)
+        return out | {r for r, x in sc.items() if x >= top - self.p.room_margin}
 
     # -- the verdict table
-    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]],
-                   unknown_type: str | None = None) -> SceneView:
-        """What the robot's memory holds of a scene: recorded objects, names, room descriptions (unknown_type:
-        a room type the summariser is made not to know, as fitting does)."""
+    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
+        """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type."""
         vocab = sorted({n.lower() for ns in recorded_names.values() for n in ns})
         aliases = alias_sets(recorded_names)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
@@ -228,10 +230,9 @@ class Verifier:
                     by_room[scene.objects[oi].room].append(n.lower())
         counts = {r: Counter(canonical(n) for o, ns in recorded_names.items() if scene.objects[o].room == r for n in ns)
                   for r in by_room}
-        descs = {r: f"{_summariser().infer_type(counts[r], 2, unknown_type)[0]}: a room with " + ", ".join(ns[:12])
-                 if ns else ""
-                 for r, ns in by_room.items()}
-        return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), descs, aliases)
+        types = {r: _summariser().infer_type(counts[r], 2)[0] for r, ns in by_room.items() if ns}
+        return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), {r: tuple(ns) for r, ns in by_room.items()},
+                         types, aliases)
 
     def perceptions_of(self, scene: Scene, key: str) -> list[tuple[Perceived, ...]]:
         """`looks` close-range perceptions of every scene object (the look-around on arrival sees it from
@@ -259,7 +260,7 @@ class Verifier:
             if not c.is_superlative:
                 ok &= np.array([h and sensor_holds(c, o.readings[c.reading]) for h, o in zip(has, objs)])
         if sg.room is not None:
-            rooms = self.rooms_match(sg.room, view.room_desc)
+            rooms = self.rooms_match(sg.room, view)
             in_room = np.array([o.room in rooms for o in objs])
             ok &= in_room
         for c in sg.sensors:
@@ -326,7 +327,8 @@ class SceneView:
     scene: Scene
     known: tuple[int, ...]  # scene objects the memory recorded
     vocab: tuple[str, ...]  # every name the memory's captions used
-    room_desc: dict  # room id -> "<inferred type>: a room with ..." from the names recorded there ('' when none)
+    room_names: dict  # room id -> the names the memory recorded there (empty when none)
+    room_type: dict  # room id -> the type the forest's summariser infers from them (rooms with names only)
     aliases: dict  # object index -> every name the memory recorded for it (lower case)
 
 

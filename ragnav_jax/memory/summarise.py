@@ -69,13 +69,12 @@ class Summariser:
         n = math.sqrt(sum(x * x for x in v.values())) or 1.0
         return {c: x / n for c, x in v.items()}
 
-    def infer_type(self, counts: Counter, level: int, exclude: str | None = None) -> tuple[str, float]:
-        """Best prototype (functional areas and rooms at level 1, rooms above) and its cosine score; `exclude`
-        leaves one room type out (as if the summariser had never heard of it)."""
+    def infer_type(self, counts: Counter, level: int) -> tuple[str, float]:
+        """Best prototype (functional areas and rooms at level 1, rooms above) and its cosine score."""
         if not counts:
             return "passage", 0.0
         q = self._vec(dict(counts))
-        cands = {k: v for k, v in self.rooms.items() if k != exclude}
+        cands = dict(self.rooms)
         if level <= 1:
             cands.update(self.areas)
         best, score = "open area", 0.0
