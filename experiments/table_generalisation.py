@@ -63,7 +63,7 @@ def main(argv=None) -> int:
     table = []
     for m in methods:
         row = [m]
-        for name, r in res.items():
+        for r in res.values():
             f = r[m]
             c = f.get("vs_ragnav")
             row += [f"{f['success']:.3f} [{f['success_ci95'][0]:.2f}, {f['success_ci95'][1]:.2f}]",

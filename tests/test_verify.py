@@ -126,6 +126,18 @@ def test_fitted_values_name_their_split():
         load_fitted("no-such-embedder")
 
 
+def test_bad_fitted_file_is_a_one_line_error(tmp_path):
+    import json
+
+    bad = tmp_path / "fitted.json"
+    for text, match in [("{not json", "cannot read"), ('{"format": "x"}', "not a ragnav-fitted/1"),
+                        (json.dumps({"format": "ragnav-fitted/1", "verifier": {"minilm": {"params": {"tau_head": "a"}}}}),
+                         r"params\.tau_head")]:
+        bad.write_text(text)
+        with pytest.raises(UserError, match=match):
+            load_fitted("minilm", bad)
+
+
 def test_fitting_reads_the_seen_split_only(monkeypatch):
     """Every unseen-split table of the world raises while the verifier is fitted: fitting never reads it."""
     from ragnav_jax.evaluation import fitting

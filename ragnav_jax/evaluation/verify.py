@@ -81,8 +81,12 @@ def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierP
     entry = d.get("verifier", {}).get(embedder_name)
     if entry is None:
         raise UserError(f"{path}: verifier: no thresholds for embedder '{embedder_name}' (run ragnav fit-verifier)")
-    names = {f.name for f in dataclasses.fields(VerifierParams)}
-    return VerifierParams(**{k: float(v) for k, v in entry["params"].items() if k in names})
+    names = [f.name for f in dataclasses.fields(VerifierParams)]
+    params = entry.get("params") if isinstance(entry, dict) else None
+    bad = [k for k in names if not isinstance(params, dict) or not isinstance(params.get(k), (int, float))]
+    if bad:
+        raise UserError(f"{path}: verifier.{embedder_name}.params.{bad[0]}: missing or not a number")
+    return VerifierParams(**{k: float(params[k]) for k in names})
 
 
 @functools.cache
