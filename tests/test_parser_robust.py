@@ -325,7 +325,10 @@ _SOUP = st.sampled_from(
     (string.ascii_lowercase[:6] + " ").split() + "go to the a lamp that is which that's isn't not switched turned on off "
     "plugged in unplugged lit running open one ones , ( ) [ ] ; . - — and then the order is your call whichever "
     "hottest exceeds no lower than above 60 degrees ºc deg c per cent % ndvi .7 x= y= 3.5 / | m minus made of "
-    "your job is to pop over make a stop comes first once you're done there before anything else ajar being".split()
+    "your job is to pop over make a stop comes first once you're done there before anything else ajar being "
+    "shares a room with sharing where close by in vicinity of or thereabouts beneath begin by tracking would mind "
+    "when you've finished all i need for you could it's has or next to — exactly that order which doesn't matter "
+    "olive locked half full iron map position [ ]".split()
 )
 
 
@@ -338,3 +341,149 @@ def test_fuzz_new_vocabulary_only_raises_parse_error(words):
         return
     validate_chain_dict(c.to_dict())
     assert all(s.target.head.strip() for s in c.subgoals)
+
+
+# ----------------------------------------------------------------------------------------------------
+# 7. General rules added against the development templates (invented nouns, not their sentences)
+
+
+def _tree(t) -> str:
+    """'phrase[attrs] <rel> (anchor ...)': the target as the agreement check compares it."""
+    s = t.phrase + ("[" + ",".join(sorted(t.attributes)) + "]" if t.attributes else "")
+    return s + "".join(f" <{r.type}> ({_tree(r.anchor)})" for r in t.relations)
+
+
+def _trees(text: str) -> list[str]:
+    return [_tree(s.target) for s in parse_instruction(text).subgoals]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # verbs of position, sharing and possession in relative clauses and after "and"
+        ("Find the zorbel which shares a room with the quillet.", ["zorbel <in_room_with> (quillet)"]),
+        ("Find the zorbel sharing the same room as the quillet.", ["zorbel <in_room_with> (quillet)"]),
+        ("Find the zorbel in the room where the quillet is.", ["zorbel <in_room_with> (quillet)"]),
+        ("Find the zorbel in the room where the quillet that is lit is.", ["zorbel <in_room_with> (quillet[lit])"]),
+        ("Find the zorbel that lies next to the quillet and has a glimmet on it.",
+         ["zorbel <next_to> (quillet) <with> (glimmet)"]),
+        ("Find the zorbel, the teal one, perched on the quillet.", ["teal zorbel[teal] <on> (quillet)"]),
+        ("Find the zorbel which can be found near the quillet.", ["zorbel <near> (quillet)"]),
+        ("Find the zorbel close by the quillet, then the glimmet in the vicinity of the quillet.",
+         ["zorbel <near> (quillet)", "glimmet <near> (quillet)"]),
+        # "on or next to it", "on it or beside it": one relation to the pronoun, which names the anchor itself
+        ("Find the zorbel with the quillet on or next to it.", ["zorbel <with> (quillet)"]),
+        ("Find the zorbel which has the quillet on it or beside it, and the glimmet.", ["zorbel <with> (quillet)", "glimmet"]),
+        # coordinated states and attributes continue the clause's noun, however deep it is
+        ("Find the zorbel near the quillet that is teal and switched on, then the glimmet.",
+         ["zorbel <near> (teal quillet[switched on,teal])", "glimmet"]),
+        ("Find the zorbel that is lilac and closed, and the glimmet.", ["lilac zorbel[closed,lilac]", "glimmet"]),
+        ("Find the zorbel that is lilac and open in the den.", ["lilac zorbel[lilac,open]"]),
+        ("Find the zorbel which is ivory and shares a room with the quillet.", ["ivory zorbel[ivory] <in_room_with> (quillet)"]),
+        # descriptive words after the noun join the phrase, states do not
+        ("Go to the zorbel which is olive.", ["olive zorbel[olive]"]),
+        ("Go to the zorbel that's locked and the quillet that is half full.", ["zorbel[locked]", "quillet[half full]"]),
+        # a noun that is also a material ("iron") is a noun when no other noun follows it
+        ("Go to the iron, the charcoal one, then the zorbel.", ["charcoal iron[charcoal]", "zorbel"]),
+        ("Go to the iron.", ["iron"]),
+        ("Go to the big, red zorbel.", ["big red zorbel[big,red]"]),
+        # a pronoun subject describes the previous goal
+        ("Go to the zorbel; it's next to the quillet.", ["zorbel <next_to> (quillet)"]),
+        # dashes set off an apposition
+        ("Go to the zorbel \u2014 the red one \u2014 and then the quillet.", ["red zorbel[red]", "quillet"]),
+    ],
+)
+def test_general_clause_rules(text, expected):
+    assert _trees(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, heads",
+    [
+        # framing that ends in "you" + a modal or "to"
+        ("All I need is for you to scurry over to the zorbel.", ["zorbel"]),
+        ("It would be wonderful if you could locate the zorbel.", ["zorbel"]),
+        # -ing verbs the lexicon does not know, after "begin by", "would you mind"
+        ("Begin by photographing the zorbel, carry on to the quillet and end by polishing the glimmet.",
+         ["zorbel", "quillet", "glimmet"]),
+        ("Would you mind dusting off the zorbel?", ["zorbel"]),
+        ("Begin by dropping in at the zorbel, then the quillet.", ["zorbel", "quillet"]),
+        # subordinate clauses: with an object it is a goal that comes first, without one it only sequences
+        ("Once you've reached the zorbel, head to the quillet.", ["zorbel", "quillet"]),
+        ("After you have inspected the zorbel, look for the quillet.", ["zorbel", "quillet"]),
+        ("Look for the quillet after you have inspected the zorbel.", ["zorbel", "quillet"]),
+        ("Before you scurry to the quillet, visit the zorbel.", ["zorbel", "quillet"]),
+        ("Visit the zorbel before you make a stop at the quillet.", ["zorbel", "quillet"]),
+        ("Once you have taken a look at the zorbel, visit the quillet.", ["zorbel", "quillet"]),
+        ("Visit the zorbel. When you've finished there, scurry over to the quillet.", ["zorbel", "quillet"]),
+        ("Visit the zorbel. As soon as you're done, the quillet.", ["zorbel", "quillet"]),
+        ("If you don't mind, visit the zorbel.", ["zorbel"]),
+        ("Visit the zorbel, then over to the quillet.", ["zorbel", "quillet"]),
+        ("Your first stop is the zorbel, your second is the quillet, and your fifth is the glimmet.",
+         ["zorbel", "quillet", "glimmet"]),
+    ],
+)
+def test_general_imperatives_and_sequencing(text, heads):
+    c = parse_instruction(text)
+    assert [s.target.head for s in c.subgoals] == heads and c.order == "strict"
+    assert all(not s.target.relations for s in c.subgoals)
+
+
+@pytest.mark.parametrize(
+    "text, order",
+    [
+        ("Visit the zorbel and the quillet. Which one comes first doesn't matter.", "free"),
+        ("Visit the zorbel and the quillet; it does not matter which you visit first.", "free"),
+        ("Visit the zorbel and the quillet, in exactly that order.", "strict"),
+        ("In this exact order, visit the zorbel and the quillet.", "strict"),
+        ("Visit the zorbel and the quillet one after another.", "strict"),
+    ],
+)
+def test_order_phrases_are_removed(text, order):
+    c = parse_instruction(text)
+    assert [s.target.phrase for s in c.subgoals] == ["zorbel", "quillet"] and c.order == order
+
+
+@pytest.mark.parametrize(
+    "text, reading, comparator, value",
+    [
+        ("Go to the zorbel with an NDVI of 0.14 or thereabouts.", "ndvi", "approx", 0.14),
+        ("Go to the zorbel that reads 45 deg C or above.", "temperature_c", "ge", 45.0),
+        ("Go to the zorbel with a humidity beneath 30 percent.", "humidity_pct", "lt", 30.0),
+        ("Go to the zorbel whose NDVI falls below 0.5.", "ndvi", "lt", 0.5),
+        ("Go to the zorbel whose temperature does not reach 20 degrees.", "temperature_c", "lt", 20.0),
+    ],
+)
+def test_more_sensor_wordings(text, reading, comparator, value):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.phrase == "zorbel" and [(c.reading, c.comparator, c.value) for c in sg.sensors] == [
+        (reading, comparator, value)]
+
+
+@pytest.mark.parametrize("hint", ["at map position [3.5, 2]", "in the vicinity of (3.5, 2)", "close by (3.5, 2)"])
+def test_more_coordinate_leads(hint):
+    (sg,) = parse_instruction(f"Go to the zorbel {hint}.").subgoals
+    assert sg.target.relations == () and (sg.location.x, sg.location.y) == (3.5, 2.0)
+
+
+@_FAST
+@given(_NOUN, _NOUN, st.sampled_from(["shares a room with", "sits next to", "stands beside", "lies near", "is close by",
+                                      "can be found near", "has"]),
+       st.sampled_from(["that {}", "which {}", "and {}"]))
+def test_relative_clause_after_any_noun(noun, anchor, verb, form):
+    assume(_plain_head(noun) and _plain_head(anchor) and noun != anchor)
+    lead = "that is teal " if form.startswith("and") else ""
+    (sg,) = parse_instruction(f"Go to the {noun} {lead}{form.format(verb)} the {anchor}.").subgoals
+    rtype = {"shares a room with": "in_room_with", "sits next to": "next_to", "stands beside": "beside",
+             "has": "with"}.get(verb, "near")
+    assert sg.target.head == noun and [(r.type, r.anchor.phrase) for r in sg.target.relations] == [(rtype, anchor)]
+
+
+@_FAST
+@given(_NOUN, _NOUN, st.sampled_from(["once you've finished there", "when you are done", "after that",
+                                      "once you have reached the {a}", "when you get to the {a}"]))
+def test_sentence_initial_subordinate_clause(noun, anchor, clause):
+    assume(_plain_head(noun) and _plain_head(anchor) and noun != anchor)
+    text = f"Visit the {anchor}. {clause.format(a=anchor).capitalize()}, scurry over to the {noun}."
+    assert [s.target.head for s in parse_instruction(text).subgoals] == (
+        [anchor, anchor, noun] if "{a}" in clause else [anchor, noun])

@@ -44,7 +44,8 @@ STATE_PHRASES: dict[str, str] = {
     "idle": "idle", "folded": "folded", "unfolded": "unfolded", "folded up": "folded", "open": "open",
     "opened": "open", "closed": "closed", "shut": "closed", "empty": "empty", "full": "full", "in use": "in use",
     "on standby": "on standby", "on": "switched on", "off": "switched off", "left on": "switched on",
-    "left off": "switched off", "left open": "open",
+    "left off": "switched off", "left open": "open", "locked": "locked", "unlocked": "unlocked",
+    "half full": "half full", "half-full": "half full", "half empty": "half empty", "half-empty": "half empty",
 }
 # "not lit" -> "unlit": negated states that have a named opposite.
 STATE_OPPOSITES: dict[str, str] = {
@@ -52,6 +53,7 @@ STATE_OPPOSITES: dict[str, str] = {
     "turned off": "turned on", "powered on": "powered off", "powered off": "powered on", "plugged in": "unplugged",
     "unplugged": "plugged in", "lit": "unlit", "unlit": "lit", "running": "idle", "idle": "running",
     "folded": "unfolded", "unfolded": "folded", "open": "closed", "closed": "open", "empty": "full", "full": "empty",
+    "locked": "unlocked", "unlocked": "locked",
 }
 # Participle states that may follow the noun without a copula ("the lamp switched on", "the kettle unplugged")
 # or precede it hyphenated ("the switched-on lamp"); adjectives such as "open" need "that is" after a noun.
@@ -95,6 +97,11 @@ RELATION_PHRASES: dict[str, str] = {
     "in the room that has": "in_room_with",
     "in the room containing": "in_room_with",
     "in the same room as the": "in_room_with",
+    # "in the room where the kiln is": the clause's closing "is" is left as a dangling word of the anchor
+    "in the room where": "in_room_with",
+    "in the same room where": "in_room_with",
+    "in the room in which": "in_room_with",
+    "in the same room in which": "in_room_with",
     "on top of": "on",
     "on": "on",
     "onto": "on",
@@ -108,6 +115,12 @@ RELATION_PHRASES: dict[str, str] = {
     "by": "by",
     "near": "near",
     "near to": "near",
+    "close by": "near",
+    "nearby": "near",
+    "in the vicinity of": "near",
+    "in the neighbourhood of": "near",
+    "in the neighborhood of": "near",
+    "not far from": "near",
     "nearest to": "near",
     "nearest": "near",
     "closest to": "near",
@@ -128,6 +141,8 @@ RELATION_PHRASES: dict[str, str] = {
     "opposite of": "opposite",
     "across from": "opposite",
     "facing": "opposite",
+    "faces": "opposite",
+    "face": "opposite",
     "to the left of": "left_of",
     "on the left of": "left_of",
     "left of": "left_of",
@@ -138,24 +153,36 @@ RELATION_PHRASES: dict[str, str] = {
     "which has": "with",
     "having": "with",
     "holding": "with",
+    # a finite verb of possession after a relative pronoun or "and": "which has a kettle on it", "and has ..."
+    "has": "with",
+    "have": "with",
+    "holds": "with",
     "in": "in",
     "inside": "in",
     "inside of": "in",
     "within": "in",
     "into": "in",
 }
+# "shares a room with", "sharing the same room as": a verb of sharing before a room noun is in_room_with.
+for _v in ("share", "shares", "sharing", "shared"):
+    for _d in ("a", "the", "the same", "one", "a common"):
+        for _p in ("with", "as"):
+            RELATION_PHRASES[f"{_v} {_d} room {_p}"] = "in_room_with"
+
 # Words that may stand between a noun and its relation ("the lamp that is right next to the sofa").
 RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "
-    "resting found right just directly immediately somewhere mounted hanging kept".split()
+    "resting found right just directly immediately somewhere mounted hanging kept rests hangs perched parked "
+    "stored stationed installed".split()
 )
 
 # Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".
 RELATIVE_PRONOUNS = frozenset("that which who".split())
 RELATIVE_CONTRACTED = frozenset("that's which's who's thats".split())  # pronoun + "is"
 TRUE_COPULAS = frozenset("is are was were be been being seems seem appears appear looks look stays stay remains remain".split())
+MODALS = frozenset("should must will would can could might may".split())
 # Words that may stand between a relative pronoun and a state ("that has been left on", "which is currently lit").
-COPULA_WORDS = TRUE_COPULAS | frozenset("has have had currently now still already presently also left kept".split())
+COPULA_WORDS = TRUE_COPULAS | MODALS | frozenset("has have had currently now still already presently also left kept".split())
 NEGATED_COPULAS = frozenset("isn't aren't wasn't weren't not".split())
 MADE_OF = (("made", "of"), ("made", "from"), ("made", "out", "of"))
 
@@ -263,6 +290,11 @@ COMPARATOR_PHRASES.update({
     "does not exceed": "le", "doesn't exceed": "le", "not exceed": "le", "never exceeds": "le",
     "not exceeding": "le", "does not go above": "le", "doesn't go above": "le",
     "does not drop below": "ge", "doesn't drop below": "ge", "never drops below": "ge", "not dropping below": "ge",
+    "beneath": "lt", "falls below": "lt", "falling below": "lt", "drops below": "lt", "dropping below": "lt",
+    "stays below": "lt", "staying below": "lt", "does not reach": "lt", "doesn't reach": "lt", "not reaching": "lt",
+    "never reaches": "lt", "stays above": "gt", "staying above": "gt", "goes over": "gt", "rising above": "gt",
+    "does not fall below": "ge", "doesn't fall below": "ge", "never falls below": "ge", "not falling below": "ge",
+    "does not go below": "ge", "doesn't go below": "ge",
 })
 # "not above 20" -> le 20, "no lower than 55" -> ge 55 (thresholds only: comparatives live in COMPARATIVES).
 for _code, _phrases in _NEGATABLE.items():
@@ -272,7 +304,8 @@ for _code, _phrases in _NEGATABLE.items():
                 COMPARATOR_PHRASES.setdefault(f"{_neg} {_p}", "le" if _code == "gt" else "ge")
 COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or greater": "ge", "or over": "ge",
                       "or less": "le", "or lower": "le", "or below": "le", "or under": "le", "and up": "ge",
-                      "and above": "ge", "and below": "le"}
+                      "and above": "ge", "and below": "le",
+                      "or thereabouts": "approx", "or so": "approx"}
 
 NUMBER_WORDS = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
@@ -280,6 +313,13 @@ NUMBER_WORDS = {
     "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50,
     "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
 }
+
+ORDINAL_WORDS = ("first", "next", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth", "tenth",
+                 "final", "last", "penultimate")
+# Subordinate clauses that only sequence goals ("once you've finished there", "when you get there"): a segment
+# opening with one of these words and naming nothing (no determiner) is dropped.
+SUBORDINATORS = frozenset("once when whenever after upon having as soon if".split())
+SUBJECT_PRONOUNS = frozenset("you you've you're you'll you'd we we've we're i i've i'm".split())
 
 # Verbs and politeness that introduce a goal ("please head over to", "I need you to check").
 LEAD_PHRASES = (
@@ -323,10 +363,20 @@ LEAD_PHRASES = (
     "when that is done", "after that's done", "after that is done", "after you've done that",
     "after you have done that", "having done that", "with that done", "that done", "after you're done there",
     "after you are done there",
-    *(f"{d}{o} {n} {v}" for d in ("your ", "the ", "our ", "") for o in ("first", "next", "second", "third", "final", "last")
-      for n in ("stop", "destination", "target", "goal", "waypoint", "port of call")
-      for v in ("is", "should be", "will be", "must be", "has to be")),
+    *(f"{d}{o} {n}{v}" for d in ("your ", "the ", "our ", "") for o in ORDINAL_WORDS
+      for n in ("stop ", "destination ", "target ", "goal ", "waypoint ", "port of call ", "one ", "")
+      for v in ("is", "should be", "will be", "must be", "has to be") if d or n),
+    # the subject of an imperative or of a clause after "before"/"after": "before you head for the kiln"
+    "you", "you can", "you could", "you may", "you might", "you will", "you'll", "you then", "then you",
+    # "begin by tracking down", "would you mind checking": the -ing verb after these is dropped (parser)
+    "begin by", "start by", "start off by", "finish by", "finish off by", "end by", "wrap up by", "kick off by",
+    "round off by", "conclude by", "do you mind", "would you mind",
+    # sequencing adverbs
+    *ORDINAL_WORDS, "later", "later on", "eventually", "ultimately", "in the end", "to conclude", "to close",
+    "to round off", "following that", "following this", "after which", "thereafter", "from there on",
 )
+# Leads after which a verb's -ing form follows ("begin by <verb>ing", "would you mind <verb>ing").
+ING_LEADS = frozenset({"by", "mind"})
 VERBS = (
     "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
     "navigate", "navigating", "proceed", "return", "come", "get", "getting", "make your way", "take me",
@@ -343,7 +393,7 @@ VERBS = (
     "making a stop", "stopping off", "stopping by", "dropping by", "passing", "heading", "making your way",
 )
 VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "directly", "quickly", "right", "on",
-                  "along", "round", "past")
+                  "along", "round", "past", "yourself", "itself", "around", "away")
 VERB_PREPOSITIONS = ("to", "towards", "toward", "into", "for", "at", "by", "onto", "past")
 TRAILING_FILLERS = (
     "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
@@ -352,7 +402,7 @@ TRAILING_FILLERS = (
     "of all", "of them all", "of all of them", "among them", "overall",
     # "X comes first, then Y", "X is your last stop"
     *(f"{v} {o}" for v in ("comes", "goes", "is", "should come", "should be", "will be", "must be", "has to be")
-      for o in ("first", "next", "second", "third", "last", "at the end", "after that", "in the middle")),
+      for o in (*ORDINAL_WORDS, "at the end", "after that", "in the middle")),
     *(f"{v} {d} {o} {n}" for v in ("is", "should be", "will be", "must be", "has to be") for d in ("your", "the")
       for o in ("first", "next", "second", "third", "final", "last") for n in ("stop", "destination", "goal")),
 )

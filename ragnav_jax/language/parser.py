@@ -25,7 +25,14 @@ phrase can be a goal. It works in passes over the lower-cased text:
 6. segments with no noun (", about 60 degrees,", "near the sofa", ", which is on,") join the previous
    goal, and so do appositions ("the heater, the black one," or "the fern (the one by the window)")
    unless they clash with it ("the red chair, the blue one" lists two chairs); "X after Y" and "X, but
-   first Y" swap; pronoun anchors ("next to it") refer to the previous goal.
+   first Y" swap; pronoun anchors ("next to it") refer to the previous goal;
+7. clauses go on after "and" with the noun their relative pronoun described ("the bin that is lilac and
+   closed", "the desk which is oak and has a lamp on it or beside it"); a clause with no subject ("standing
+   by the door", "it's next to the sofa") describes the goal; sentence-initial subordinate clauses either
+   name a goal that comes first ("once you've reached the kiln, ...") or only sequence ("when you've
+   finished there, ..."); framing that ends in "you" + a modal ("all I need is for you to") is dropped.
+   Descriptive words written after a noun join its phrase ("the sofa which is red": "red sofa"); states
+   do not.
 
 Anything it cannot read raises ParseError (a UserError) saying what was missing; nothing else escapes.
 """
@@ -93,7 +100,8 @@ UNIT = (
     r"|degs?\b\.?(?:\s*(?:celsius|centigrade|fahrenheit|c|f)\b)?|celsius\b|centigrade\b"
     r"|fahrenheit\b|c\b|f\b|%|percent\b|per\s+cent\b)"
 )
-POST = r"(?:\s+(?P<post>or\s+(?:more|higher|above|greater|over|less|lower|below|under)|and\s+(?:up|above|below))\b)?"
+_POST_ALT = _alt(L.COMPARATOR_POSTFIX)
+POST = rf"(?:\s*(?P<post>{_POST_ALT}))?"  # "55 degrees or more", "0.14 or thereabouts"
 NOT_LENGTH = (
     r"(?!\s*(?:m|cm|mm|km|meters?|metres?|feet|foot|ft|steps?|minutes?|mins?|seconds?|secs?|hours?|inch(?:es)?"
     r"|people|persons?|chairs?|times?|x)\b)"
@@ -109,9 +117,10 @@ _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|�
 
 _LOC_LEAD = (
     r"(?:(?:\b(?:which|that)\s+is\s+|\blocated\s+|\bpositioned\s+|\bsituated\s+|\bplaced\s+)?"
-    r"\b(?:at|near|around|by|close\s+to|next\s+to)\s+)?"
+    r"\b(?:at|near|around|by|close\s+to|close\s+by|next\s+to|in\s+the\s+(?:vicinity|neighbou?rhood)\s+of"
+    r"|not\s+far\s+from)\s+)?"
     r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
-    r"(?:\b(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:\bof\s+)?"
+    r"(?:\b(?:map|grid|floor|floor\s+plan)\s+)?(?:\b(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:\bof\s+)?"
 )
 _METRES = r"(?:\s*(?:m|meters?|metres?)\b)?"  # "(3.5 m, 2 m)"
 _PAIR_PAREN = (
@@ -125,6 +134,7 @@ _PAIR_XY = (
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
 _LOC2 = re.compile(
     r"(?:\b(?:located|positioned|situated|placed)\s+)?\b(?:at|coordinates?|coords?|position|point|location)\s+"
+    r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location)\s+)?"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
     rf"(?P<x3>{NUM}){_NUM_END}{_METRES}\s*[,/|]\s*(?P<y3>{NUM}){_NUM_END}{_METRES}"
 )
@@ -157,7 +167,7 @@ _VERB_BEFORE_SENSOR = re.compile(
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
     rf"(?:(?P<cmp>{CMP_ALT})\s*(?P<num>{NUM}){_NUM_END}{NOT_LENGTH}\s*(?P<unit>{UNIT})?" + POST
-    + rf"|(?P<num2>{NUM}){_NUM_END}\s*(?P<unit2>{UNIT}))"
+    + rf"|(?P<num2>{NUM}){_NUM_END}\s*(?P<unit2>{UNIT})" + POST.replace("?P<post>", "?P<post2>") + ")"
 )
 _SUPER_READ = re.compile(
     r"(?:\b(?:with|having|that\s+has|which\s+has|showing|of)\s+)?(?:\b(?:the|its)\s+)?"
@@ -205,6 +215,17 @@ _FREE = re.compile(
     r"|\b(?:in\s+)?(?:an?\s+)?(?:order|sequence)\s+of\s+your\s+(?:choice|choosing)"
     r"|\b(?:i\s+)?(?:do\s+not|don't)\s+mind\s+(?:the|which|what)\s+(?:order|sequence)"
     r"|\b(?:in\s+)?no\s+(?:specific|set|fixed|required|special)\s+(?:order|sequence)"
+    # "which one comes first doesn't matter", "it does not matter which you visit first"
+    r"|\b(?:which|what)\b[^.;:,!?⟪]{0,40}?\b(?:does\s+not|doesn't|do\s+not|don't|won't|will\s+not)\s+matter\b"
+    r"|\b(?:it\s+)?(?:does\s+not|doesn't|won't|will\s+not)\s+matter\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
+)
+# Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
+_STRICT = re.compile(
+    r"\b(?:in\s+)?(?:(?:exactly|precisely|strictly|just)\s+)?(?:this|that|the\s+(?:same|given|listed|stated|following"
+    r"|above|written))\s+(?:(?:exact|very|same|precise)\s+)?(?:order|sequence)\b"
+    r"(?:\s+(?:as\s+)?(?:given|listed|written|stated|above|below))?"
+    r"|\bin\s+the\s+(?:exact\s+)?(?:order|sequence)\s+(?:given|listed|written|stated|shown|above|below|i\s+(?:gave|listed))"
+    r"|\bin\s+(?:strict\s+)?(?:order|sequence)\s*(?=[,.;:!?]|$)|\bone\s+after\s+(?:the\s+)?(?:other|another)\b|\bone\s+by\s+one\b"
 )
 # "Before anything else, X": X comes first (not "X before Y").
 _FIRST_OF_ALL = re.compile(r"\bbefore\s+(?:you\s+do\s+)?(?:anything|everything|all)\s+else\b")
@@ -215,12 +236,12 @@ _CONNECTORS = (
     "before", "after", "subsequently",
 )
 _SPLIT = re.compile(
-    r"(?P<c>[,;:!?()\[\]]|\.(?!\d)|\s&\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
+    r"(?P<c>[,;:!?()\[\]]|\.(?!\d)|\s&\s|\s-+\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
 )
 _TOKEN = re.compile(r"⟪[a-z]+⟫|[^\W_]+(?:['\-][^\W_]+)*")
 SWAP_BACK = ("after", "but first", "before that")  # "X after Y": Y comes first
 APPOSITION = ("(", "[")  # "the desk (the oak one)": the bracketed phrase describes the previous goal
-LIST_SEPARATORS = (",", ")", "]")  # "the heater, the black one,": an apposition unless it clashes
+LIST_SEPARATORS = (",", ")", "]", "-")  # "-": a spaced hyphen or a dash  # "the heater, the black one,": an apposition unless it clashes
 
 
 def _phrase_tuples(phrases) -> list[tuple[str, ...]]:
@@ -403,7 +424,7 @@ def _cut(s: str, marks: _Marks) -> str:
 
     def bare(m: re.Match) -> str:
         if m.group("num2") is not None:
-            c = _sensor(None, "approx", m.group("num2"), m.group("unit2"), m.group(0))
+            c = _sensor(None, _cmp_code(None, m.group("post2")), m.group("num2"), m.group("unit2"), m.group(0))
         else:
             c = _sensor(None, _cmp_code(m.group("cmp"), m.group("post")), m.group("num"), m.group("unit"), m.group(0))
         return marks.add(m.group(0), sensor=c)
@@ -472,8 +493,10 @@ class _Node:
             base = dataclasses.replace(antecedent, relations=())
         else:
             attrs, head = split_noun_phrase(self.words)
-            # The phrase is the noun phrase as written before any clause: "lamp" for "the lamp that is on".
-            base = Target(" ".join(self.words), head, attrs + tuple(a for a in self.states if a not in attrs))
+            # The phrase is the noun phrase with its descriptive words in front and without its states: "red
+            # sofa" for "the sofa which is red", "lamp" for "the lamp that is on" (as the generator writes it).
+            pre = [a for a in self.states if a not in _STATE_ATTRS and a not in attrs]
+            base = Target(" ".join(pre + self.words), head, attrs + tuple(a for a in self.states if a not in attrs))
             if len(base.phrase) > 200 or len(head) > 100 or any(len(a) > 60 for a in base.attributes):
                 raise ParseError(f"could not read '{base.phrase[:80]}...' as one object: name it in fewer words")
         # A pronoun anchor refers to the previous goal; inside a nested phrase ("the desk, which has a lamp
@@ -496,6 +519,8 @@ class _Piece:
     texts: list[str] = dataclasses.field(default_factory=list)
     ellipsis: bool = False  # "the coldest one": the head is the previous goal's
     led: bool = False  # a verb or politeness phrase opened the segment ("visit the blue one")
+    det: bool = False  # the segment (after any verb) opens with a determiner ("the iron", not "red chair")
+    clause: _Node | None = None  # the noun the segment's last relative clause describes ("the bin that is full")
 
     @property
     def empty(self) -> bool:
@@ -554,28 +579,96 @@ def _strip_phrases(tokens: list[str], index: dict, at_start: bool = True) -> tup
     return tokens, False
 
 
+_MODAL_AFTER_YOU = frozenset("to could would can will might may should must".split())
+_INTRO_PREPS = frozenset("to towards toward into onto for past".split())
+
+
+def _verb_tail(tokens: list[str]) -> list[str]:
+    """Drops the particles and preposition after a verb: "over to", "in at", "yourself to"."""
+    while tokens and tokens[0] in L.VERB_PARTICLES:
+        tokens = tokens[1:]
+    if len(tokens) > 2 and tokens[0] in ("in", "off", "by") and tokens[1] in L.VERB_PREPOSITIONS:
+        tokens = tokens[1:]  # "drop in at", "stop off at", "stop by at"
+    if tokens and tokens[0] in L.VERB_PREPOSITIONS and len(tokens) > 1:
+        tokens = tokens[1:]
+    return tokens
+
+
+def _plain_word(w: str) -> bool:
+    """A word that can be a verb the lexicon does not know (not a determiner, modifier, relation, room or number)."""
+    return (w.isalpha() and w not in L.DETERMINERS and not L.is_modifier(w) and w not in _RELS
+            and w not in L.ROOM_WORDS and w not in L.NUMBER_WORDS)
+
+
+def _strip_framing(tokens: list[str]) -> list[str]:
+    """'all i need is for you to <verb> ...', 'it'd be wonderful if you could <verb> ...': any framing that ends in
+    'you' and a modal or 'to' with nothing named before it (no determiner) is dropped."""
+    for k in range(min(len(tokens) - 2, 10)):
+        w = tokens[k]
+        if w in L.DETERMINERS or w.startswith("⟪"):
+            return tokens
+        if (w == "you" and tokens[k + 1] in _MODAL_AFTER_YOU) or w in ("you'd", "you'll"):
+            return tokens[k + (1 if w != "you" else 2):]
+    return tokens
+
+
+def _subordinate_lead(tokens: list[str]) -> int:
+    """Length of a subordinate clause's opening before its object: "once you've reached [the kiln]", "when we
+    get to [the loom]", "you have inspected [the lathe]" (after "after"); 0 if there is none."""
+    j = 1 if tokens and tokens[0] in L.SUBORDINATORS else 0
+    if j and tokens[0] == "as" and tokens[1:3] == ["soon", "as"]:
+        j = 3
+    if j >= len(tokens) or tokens[j] not in L.SUBJECT_PRONOUNS:
+        return 0
+    rest, known = _strip_phrases(tokens[j + 1 :], _VERBS)
+    if known:  # a verb the lexicon knows, which may hold a determiner: "before you make a stop at the kiln"
+        return len(tokens) - len(_verb_tail(rest))
+    for k in range(j + 2, min(j + 8, len(tokens) - 1)):
+        if tokens[k] in ("a", "an") and k + 3 < len(tokens) and tokens[k + 2] in L.VERB_PREPOSITIONS:
+            continue  # "once you've made a stop at [the kiln]", "after you take a look at [the loom]"
+        if tokens[k] in L.DETERMINERS:
+            return k if all(w.replace("'", "").isalpha() for w in tokens[j + 1 : k]) else 0
+    return 0
+
+
 def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
     """Drops politeness, verbs and order words in front and fillers behind; also says whether any led."""
     n0 = len(tokens)
-    changed = True
+    tokens = _strip_framing(tokens)
+    changed, ing = True, False
     while changed and tokens:
+        sub = _subordinate_lead(tokens)
+        if sub:  # "once you've reached the kiln": the kiln is the goal
+            tokens, changed = tokens[sub:], True
+            continue
+        before = tokens
         tokens, changed = _strip_phrases(tokens, _LEADS)
         if changed:
+            # "begin by tracking down the kiln", "would you mind popping over to": an -ing verb follows
+            ing = before[len(before) - len(tokens) - 1] in L.ING_LEADS
             continue
         tokens, changed = _strip_phrases(tokens, _VERBS)
         if changed:
-            while tokens and tokens[0] in L.VERB_PARTICLES:
-                tokens = tokens[1:]
-            if tokens and tokens[0] in L.VERB_PREPOSITIONS and len(tokens) > 1:
-                tokens = tokens[1:]
+            tokens, ing = _verb_tail(tokens), False
+            continue
+        if ing and len(tokens) > 1 and tokens[0].endswith("ing") and _plain_word(tokens[0]):
+            tokens, changed, ing = _verb_tail(tokens[1:]), True, False
             continue
         if tokens and tokens[0] in ("to", "towards", "toward") and len(tokens) > 1:
             tokens, changed = tokens[1:], True
-    # An unknown verb before a determiner ("photograph the fridge"): drop it.
-    for k in range(1, min(4, len(tokens) - 1)):
+        elif len(tokens) > 2 and tokens[0] in L.VERB_PARTICLES and tokens[1] in ("to", "towards", "toward"):
+            tokens, changed = tokens[2:], True  # "then over to the loom"
+    # An unknown verb before a determiner ("photograph the fridge", "scurry over to the fridge"): drop it.
+    for k in range(1, min(5, len(tokens) - 1) if _boundary_at(tokens, 0) is None else 0):
         if tokens[k] in ("the", "a", "an", "my", "our", "your"):
             before = tokens[:k]
-            if all(w.isalpha() and not L.is_modifier(w) and _relation_at(before, i) is None for i, w in enumerate(before)):
+            if before[0] in L.DETERMINERS:
+                break
+            if k < 4 and all(w.isalpha() and not L.is_modifier(w) and _relation_at(before, i) is None
+                             for i, w in enumerate(before)):
+                tokens = tokens[k:]
+            elif (_plain_word(before[0]) and before[-1] in _INTRO_PREPS
+                  and all(w in L.VERB_PARTICLES for w in before[1:-1])):
                 tokens = tokens[k:]
             break
     led = len(tokens) < n0
@@ -609,12 +702,15 @@ def _boundary_at(tokens: list[str], i: int) -> tuple[str, int, bool] | None:
 
 
 _STATES = _by_first_word(L.STATE_PHRASES)
+# A verb that closes a clause around its subject: "in the room where the kiln (that is lit) is".
+_CLOSING_VERBS = frozenset("is are was were sits stands lies stays".split())
 _CLAUSE_END = frozenset("and or but yet not".split()) | L.RELATIVE_PRONOUNS | L.RELATIVE_CONTRACTED
 
 
 def _np_end(tokens: list[str], k: int) -> bool:
     """Nothing more of this noun phrase follows tokens[k-1]: the end, a conjunction, a relation or a clause."""
-    return k >= len(tokens) or tokens[k] in _CLAUSE_END or _boundary_at(tokens, k) is not None
+    return (k >= len(tokens) or tokens[k] in _CLAUSE_END or _boundary_at(tokens, k) is not None
+            or (k == len(tokens) - 1 and tokens[k] in _CLOSING_VERBS))
 
 
 def _state_at(tokens: list[str], j: int) -> tuple[str, str, int] | None:
@@ -698,6 +794,9 @@ def _join_prenominal_states(tokens: list[str]) -> list[str]:
 
 
 def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
+    # A clause with no subject of its own ("and stands beside the kiln", "sitting next to the loom"): no noun.
+    if i < len(tokens) and tokens[i] not in L.DETERMINERS and _boundary_at(tokens, i) is not None:
+        return [], i
     while i < len(tokens) and tokens[i] in L.DETERMINERS:
         i += 1
     if tuple(tokens[i : i + 2]) == ("one", "of"):
@@ -710,6 +809,11 @@ def _read_np(tokens: list[str], i: int) -> tuple[list[str], int]:
             break
         if not words and _relation_at(tokens, i) is not None:
             break
+        if words and tokens[i] == "or" and _boundary_at(tokens, i + 1) is not None:
+            break  # "with the kettle on it or beside it"
+        if words and (tokens[i] in _RELATIVE_WORDS):
+            break  # "the kiln which can be found near the loom": a clause, read by the caller
+
         words.append(tokens[i])
         i += 1
     # Relative-clause words left before a cut-out sensor phrase: "the fridge that is (colder than 5 C)",
@@ -725,7 +829,9 @@ def _room_name(words: list[str]) -> str:
     return " ".join(words)
 
 
-_CONTINUATION = frozenset("which who where whose is are was were".split()) | L.RELATIVE_CONTRACTED | L.NEGATED_COPULAS
+_RELATIVE_WORDS = L.RELATIVE_PRONOUNS | L.RELATIVE_CONTRACTED | frozenset({"whose"})
+_CONTINUATION = (frozenset("which who where whose is are was were".split()) | L.RELATIVE_CONTRACTED | L.NEGATED_COPULAS
+                 | L.MODALS)  # "and can be found near the loom"
 _MODALS = frozenset("should must will would can could might may does do did".split())
 
 
@@ -736,9 +842,20 @@ def _continues(tokens: list[str]) -> bool:
         return False
     if tokens[0] in _CONTINUATION:
         return True
+    if tokens[0] in ("it", "it's", "this", "they", "they're") and len(tokens) > 1 and (
+            _boundary_at(tokens, 1) is not None or _post_attrs_at(tokens, 1) is not None):
+        return True  # "it's next to the sofa", "it is switched on": the previous goal, described
     nxt = tokens[1] if len(tokens) > 1 else None
     return tokens[0] == "that" and (nxt is None or nxt in L.COPULA_WORDS or nxt in L.NEGATED_COPULAS
                                     or nxt in L.RELATIVE_LEADERS or nxt in _MODALS or _relation_at(tokens, 1) is not None)
+
+
+def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
+    """A subordinate clause that names nothing: "once you're done there", "when you've finished", "after we
+    get there" (a subordinator or a subject pronoun first, no determiner, no cut-out phrase)."""
+    if not tokens or len(tokens) != len(raw) or any(t in L.DETERMINERS for t in tokens):
+        return False
+    return tokens[0] in L.SUBORDINATORS or (tokens[0] in L.SUBJECT_PRONOUNS and len(tokens) > 1)
 
 
 def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
@@ -753,10 +870,14 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
                 piece.sensors.extend(marks.sensors[t])
         else:
             tokens.append(t)
+    if _sequencing_clause(tokens, raw):
+        return piece  # "when you've finished there,": says only that what follows comes next
     tokens, piece.led = _strip_leaders(tokens)
     tokens = _join_prenominal_states(tokens)
-    # ", which should be hotter than 100 degrees", ", which is on,": constraints of the previous goal.
-    continuation = _continues(tokens)
+    piece.det = bool(tokens) and tokens[0] in L.DETERMINERS
+    # ", which should be hotter than 100 degrees", ", which is on,": constraints of the previous goal; so is a
+    # state with no noun ("... that is teal and switched on in the den").
+    continuation = _continues(tokens) or _post_attrs_at(tokens, 0) is not None
     words, i = ([], 0) if continuation else _read_np(tokens, 0)
     top = _Node(words)
     current = top
@@ -764,6 +885,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
         post = _post_attrs_at(tokens, i)
         if post is not None:  # "that is switched on", "which is red": the nearest noun's attributes
             current.add_states(post[0])
+            piece.clause = current
             i += post[1]
             continue
         b = _boundary_at(tokens, i)
@@ -771,7 +893,13 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             i += 1
             continue
         rtype, used, room_prep = b
+        if tokens[i] in L.RELATIVE_PRONOUNS or tokens[i] in L.RELATIVE_CONTRACTED:
+            piece.clause = current  # "the desk that sits near the lamp [and has ...]": the desk's clause
         i += used
+        if i < len(tokens) and tokens[i] == "or":
+            alt = _boundary_at(tokens, i + 1)
+            if alt is not None:  # "on or next to it": the last relation is read, the first has no anchor
+                continue
         anchor, i = _read_np(tokens, i)
         if room_prep and L.is_room_phrase(anchor):
             piece.room = piece.room or _room_name(anchor)
@@ -800,6 +928,10 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     else:
         piece.node = top
     return piece
+
+
+def _all_modifiers(words: list[str]) -> bool:
+    return bool(words) and all(L.is_modifier(w, words[k + 1] if k + 1 < len(words) else "red") for k, w in enumerate(words))
 
 
 def _attr_kind(attr: str) -> str:
@@ -865,6 +997,7 @@ def parse_instruction(text: str) -> TaskChain:
     if _FREE.search(s):
         order = "free"
         s = _FREE.sub(" ", s)
+    s = _STRICT.sub(" ", s)
 
     parts = _SPLIT.split(s)
     # re.split with one named group yields [seg, connector, seg, connector, ...]
@@ -873,7 +1006,30 @@ def parse_instruction(text: str) -> TaskChain:
 
     goals: list[_Piece] = []
     pending: _Piece | None = None
-    for p in pieces:
+    for idx, p in enumerate(pieces):
+        nxt = pieces[idx + 1] if idx + 1 < len(pieces) else None
+        if p.attrs_only and not (goals and p.connector in APPOSITION) and not (
+                nxt is not None and nxt.connector in (",", "and") and not nxt.det and not nxt.led
+                and (nxt.node is not None or nxt.attrs_only)):
+            # "the iron, the charcoal one": words that no noun follows are the noun ("the big, red chair" has one)
+            if not (p.connector == "and" and not p.det and goals and goals[-1].clause is not None):
+                p.node, p.attrs_only = _Node(p.attrs_only), []
+        if (p.node is not None and p.connector == "and" and not p.det and not p.led and goals
+                and goals[-1].clause is not None and _all_modifiers(p.node.words)):
+            # "the chest that is ivory and open in the den": adjectives with no noun go on with the clause
+            p.attrs_only, p.attrs_after, p.relations = p.node.words, p.node.states, p.node.relations
+            p.node = None
+        if p.node is None and p.connector == "and" and goals and goals[-1].clause is not None and not p.det:
+            # "the bin that is lilac and closed", "the desk that is oak and has a lamp on it": the clause goes on
+            node = goals[-1].clause
+            node.add_states(p.attrs_only + p.attrs_after)
+            if node is goals[-1].node:
+                goals[-1].relations += p.relations
+            else:
+                node.relations += p.relations
+            p.relations, p.attrs_only, p.attrs_after = [], [], []
+            _merge(goals[-1], p)
+            continue
         if p.node is None:
             if p.empty:
                 continue
@@ -967,4 +1123,5 @@ def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
         into.node.add_states(extra.node.states)
         into.node.relations += extra.node.relations
     into.texts = (extra.texts + into.texts) if prefix else (into.texts + extra.texts)
+    into.clause = (into.clause or extra.clause) if prefix else (extra.clause or into.clause)
     return into
