@@ -19,6 +19,9 @@ import yaml
 
 from ragnav_jax.errors import ConfigError
 
+# episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
+EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen")
+
 ROOM_TYPES = (
     "kitchen",
     "living room",
@@ -117,9 +120,10 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
-    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev (language/phrasings.py,
-    # which the parser may be developed against) | unseen (phrasings_heldout.py, held out from the parser's
-    # authors); the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
+    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev, unseen_dev2
+    # (language/phrasings.py, phrasings_dev2.py: parser rounds were developed against them) | unseen
+    # (phrasings_heldout.py, written by someone who never read the parser, after its last round);
+    # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):
         for k in ("text", "text_location", "text_location_sensor"):
@@ -130,7 +134,7 @@ class EpisodesConfig:
         _check(self.near_distance > 0, "episodes.near_distance", "must be > 0")
         _check(self.location_radius > 0, "episodes.location_radius", "must be > 0")
         _check(self.location_margin >= self.location_radius, "episodes.location_margin", "must be >= location_radius")
-        _check(self.split in ("seen", "unseen_dev", "unseen"), "episodes.split", "must be one of seen, unseen_dev, unseen")
+        _check(self.split in EPISODE_SPLITS, "episodes.split", f"must be one of {', '.join(EPISODE_SPLITS)}")
 
 
 @dataclasses.dataclass(frozen=True)

@@ -785,12 +785,17 @@ def _renderer(split: str, what: str):
     """The split's sentence template for a goal, sensor phrase, coordinate hint or whole instruction."""
     if split == "seen":
         return {"goal": render_goal, "sensor": render_sensor, "hint": _hint_text, "instruction": render_instruction}[what]
-    if split == "unseen_dev":  # the unseen templates the parser may be developed against
+    if split == "unseen_dev":  # unseen templates the parser was developed against (round 2)
         from ragnav_jax.language import phrasings as P
 
         return {"goal": P.render_goal_unseen, "sensor": P.render_sensor_unseen, "hint": P.hint_text_unseen,
                 "instruction": P.render_instruction_unseen}[what]
-    from ragnav_jax.language import phrasings_heldout as H  # held out: nobody working on the parser reads it
+    if split == "unseen_dev2":  # the first held-out set, developed against in parser round 3
+        from ragnav_jax.language import phrasings_dev2 as D
+
+        return {"goal": D.render_goal_dev2, "sensor": D.render_sensor_dev2, "hint": D.hint_text_dev2,
+                "instruction": D.render_instruction_dev2}[what]
+    from ragnav_jax.language import phrasings_heldout as H  # held out: written without reading the parser
 
     return {"goal": H.render_goal_heldout, "sensor": H.render_sensor_heldout, "hint": H.hint_text_heldout,
             "instruction": H.render_instruction_heldout}[what]

@@ -1,4 +1,4 @@
-"""Held-out unseen phrasings: deterministic, states after the noun, relation and superlative meanings kept,
+"""Second development set of unseen phrasings: deterministic, states after the noun, relation and superlative meanings kept,
 numbers that denote the written constraint (read back by an independent reader), coordinates read back,
 strict/free wording, and clean punctuation."""
 
@@ -10,11 +10,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from ragnav_jax.language.phrasings import STATE_VALUES
-from ragnav_jax.language.phrasings_heldout import (
-    hint_text_heldout,
-    render_goal_heldout,
-    render_instruction_heldout,
-    render_sensor_heldout,
+from ragnav_jax.language.phrasings_dev2 import (
+    hint_text_dev2,
+    render_goal_dev2,
+    render_instruction_dev2,
+    render_sensor_dev2,
 )
 from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
 
@@ -69,10 +69,10 @@ def test_determinism():
     for c in (SensorConstraint("temperature_c", "gt", 60.0), SensorConstraint("ndvi", "max")):
         for seed in range(20):
             def run(rng, c=c):
-                p, t, w = render_sensor_heldout(rng, c)
-                goals = [render_goal_heldout(rng, sg, p, t, hint_text_heldout(rng, "3.5", "2")) for _ in range(3)]
-                return (p, t, w, goals, render_instruction_heldout(rng, goals, "strict"),
-                        render_instruction_heldout(rng, goals, "free"))
+                p, t, w = render_sensor_dev2(rng, c)
+                goals = [render_goal_dev2(rng, sg, p, t, hint_text_dev2(rng, "3.5", "2")) for _ in range(3)]
+                return (p, t, w, goals, render_instruction_dev2(rng, goals, "strict"),
+                        render_instruction_dev2(rng, goals, "free"))
             assert run(gen(seed)) == run(gen(seed))
 
 
@@ -83,9 +83,9 @@ def test_states_follow_the_head_noun_and_every_attribute_is_written(state):
         mods = (MODS[seed % len(MODS)],) if seed % 3 else ()
         rels = [("near", T("sofa"))] if seed % 4 == 1 else []
         sg = Subgoal(0, T("heater", (*mods, state), rels), room=ROOMS[seed % 4] if seed % 2 else None)
-        prefix, tail, _ = render_sensor_heldout(rng, SensorConstraint("temperature_c", ("max", "gt")[seed % 2], 50.0)) \
+        prefix, tail, _ = render_sensor_dev2(rng, SensorConstraint("temperature_c", ("max", "gt")[seed % 2], 50.0)) \
             if seed % 5 == 0 else ("", "", None)
-        text = render_goal_heldout(rng, sg, prefix, tail)
+        text = render_goal_dev2(rng, sg, prefix, tail)
         head = text.index("heater")
         assert re.search(_word(state), text[head:]) and not re.search(_word(state), text[:head]), text
         assert all(m in text for m in mods) and (sg.room is None or f" the {sg.room}" in text), text
@@ -106,7 +106,7 @@ def test_relations_keep_their_meaning(rtype):
     for seed in range(30):
         rng = gen(seed)
         anchor = T("sofa", ("grey fabric",), [("on", T("rug"))] if seed % 3 == 0 else [])
-        text = render_goal_heldout(rng, Subgoal(0, T("lamp", (), [(rtype, anchor)])))
+        text = render_goal_dev2(rng, Subgoal(0, T("lamp", (), [(rtype, anchor)])))
         assert re.search(_REL_WORDS[rtype] + " the grey fabric sofa", text), text
         if rtype == "with" and "it" in text.split():  # the anchor is on the target or beside it, never only on it
             assert re.search(r"on (top of )?it or (beside|next to) it", text), text
@@ -117,8 +117,8 @@ def test_superlative_scope_and_plurals():
     forms = set()
     for k in range(300):
         head = ("heater", "cactus", "bench", "peace lily", "chest of drawers", "electronics", "tv")[k % 7]
-        prefix, tail, w = render_sensor_heldout(rng, SensorConstraint("temperature_c", "max"))
-        text = render_goal_heldout(rng, Subgoal(0, T(head), room="kitchen"), prefix, tail)
+        prefix, tail, w = render_sensor_dev2(rng, SensorConstraint("temperature_c", "max"))
+        text = render_goal_dev2(rng, Subgoal(0, T(head), room="kitchen"), prefix, tail)
         m = re.fullmatch(r"the \w+ of the (.+?) (in|over in|inside|located in) the kitchen", text)
         if m:
             forms.add("plural")
@@ -140,7 +140,7 @@ def test_sensor_text_denotes_the_written_constraint(reading, values):
     for v in values:
         for cmp_ in ("gt", "ge", "lt", "le", "approx"):
             for _ in range(20):
-                prefix, tail, w = render_sensor_heldout(rng, SensorConstraint(reading, cmp_, v))
+                prefix, tail, w = render_sensor_dev2(rng, SensorConstraint(reading, cmp_, v))
                 assert prefix == "" and (w.reading, w.comparator, w.value) == (reading, cmp_, v)
                 assert read_amount(tail) == v, tail
                 assert w.unit == {"temperature_c": "c", "humidity_pct": "%", "ndvi": ""}[reading]
@@ -149,7 +149,7 @@ def test_sensor_text_denotes_the_written_constraint(reading, values):
     for cmp_ in ("max", "min"):
         seen = set()
         for _ in range(60):
-            prefix, tail, w = render_sensor_heldout(rng, SensorConstraint(reading, cmp_))
+            prefix, tail, w = render_sensor_dev2(rng, SensorConstraint(reading, cmp_))
             assert w == SensorConstraint(reading, cmp_) and bool(prefix) != bool(tail)
             seen.add("prefix" if prefix else tail.split()[0])
             text = prefix + tail
@@ -163,7 +163,7 @@ def test_hints_carry_the_given_numbers():
     for x, y in (("3.5", "2"), ("-1.2", "0.0"), ("10", "-4.25")):
         forms = set()
         for _ in range(60):
-            h = hint_text_heldout(rng, x, y)
+            h = hint_text_dev2(rng, x, y)
             nums = re.findall(r"-?\d+(?:\.\d+)?", h.replace("−", "-"))
             forms.add(re.sub(r"[-−]?\d+(\.\d+)?", "#", h))
             assert [float(n) for n in nums] == [float(x), float(y)], h
@@ -181,10 +181,10 @@ _FREE = ("any order", "of your choosing", "no required order", "whichever way ro
 @pytest.mark.parametrize("n", [1, 2, 3, 5])
 def test_strict_and_free_wording(n):
     rng = gen(n)
-    goals = [render_goal_heldout(rng, Subgoal(0, T(h, ("black", "switched off")), room="study")) for h in HEADS[:n]]
+    goals = [render_goal_dev2(rng, Subgoal(0, T(h, ("black", "switched off")), room="study")) for h in HEADS[:n]]
     for _ in range(60):
         for order in ("strict", "free"):
-            text = render_instruction_heldout(rng, goals, order)
+            text = render_instruction_dev2(rng, goals, order)
             low = text.lower()
             assert all(g.lower() in low for g in goals), text
             assert text[0].isupper() and text[-1] in ".?", text
@@ -229,14 +229,14 @@ def test_renderers_never_raise_and_write_clean_text(goals, seed, order):
     rng = gen(seed)
     texts = []
     for target, room, sensor, hinted in goals:
-        prefix, tail, written = render_sensor_heldout(rng, sensor) if sensor else ("", "", None)
-        hint = hint_text_heldout(rng, f"{rng.uniform(-9, 9):.1f}", "2") if hinted else ""
+        prefix, tail, written = render_sensor_dev2(rng, sensor) if sensor else ("", "", None)
+        hint = hint_text_dev2(rng, f"{rng.uniform(-9, 9):.1f}", "2") if hinted else ""
         sg = Subgoal(0, target, room=room, sensors=(written,) if written else ())
-        g = render_goal_heldout(rng, sg, prefix, tail, hint)
+        g = render_goal_dev2(rng, sg, prefix, tail, hint)
         assert _clean(g) and g.startswith("the ") and g.count("—") % 2 == 0 and not g.endswith((",", "—")), g
         head = g.index(target.head) if target.head in g else len(g)
         assert not any(re.search(_word(s), g[:head]) for s in target.attributes if s in STATE_VALUES), g
         texts.append(g)
-    text = render_instruction_heldout(rng, texts, order)
+    text = render_instruction_dev2(rng, texts, order)
     assert _clean(text), text
     assert all(g in text or g[0].upper() + g[1:] in text for g in texts), text

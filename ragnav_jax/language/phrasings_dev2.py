@@ -1,13 +1,14 @@
-"""Held-out unseen phrasings: the TEST templates for goals, sensor phrases, coordinates and instructions.
+"""Unseen phrasings, second development set: templates for goals, sensor phrases, coordinates and instructions.
 
 A third template set beside the seen one (`episodes.py`) and the unseen development one (`phrasings.py`):
 the same four functions, arguments and meanings, with structures and wordings neither of them writes
 (reduced relatives such as "located near", "kept on", "over in the kitchen"; dash and "i.e." appositions;
 "currently" / "right now" states; "among those ..." superlative scope and "the warmest of the heaters";
 "topping", "short of", "at or above", "or so"; "℃", "degrees centigrade", "% RH", ".70"; "(x: 3.5, y: 2)",
-"x ≈ 3.5"; "Stop 1: ...", "1) ... 2) ...", arrows, "whichever way round"). Nobody developing the parser
-reads this file, so parser accuracy on it measures generalisation. Every draw comes from the NumPy
-generator passed in, so a seed gives the same text.
+"x ≈ 3.5"; "Stop 1: ...", "1) ... 2) ...", arrows, "whichever way round"). It was the held-out test set
+until parser round 2 was measured on it; parser round 3 was developed against it, and a new held-out
+set (`phrasings_heldout.py`) took its place. Every draw comes from the NumPy generator passed in, so a
+seed gives the same text.
 """
 
 from __future__ import annotations
@@ -129,7 +130,7 @@ def _assemble(rng, head: str, post: list[tuple[str, object]]) -> str:
     return out
 
 
-def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
+def render_goal_dev2(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
     """'the kettle over in the kitchen adjacent to the sink', 'the warmest of the heaters in the study',
     'the heater — the black one — with a temperature topping 60 ℃', 'the lamp that's switched on right now'."""
     t = sg.target
@@ -261,7 +262,7 @@ def _amount(rng, reading: str, v: float, rh: bool) -> tuple[str, float, str]:
     return num + _pick(rng, units), value, "%"
 
 
-def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
+def render_sensor_dev2(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
     """(prefix before the noun or '', phrase after the noun or '', the constraint exactly as written)."""
     rd = c.reading
     if c.is_superlative:
@@ -281,7 +282,7 @@ def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tupl
 # Coordinates
 
 
-def hint_text_heldout(rng: np.random.Generator, x: str, y: str) -> str:
+def hint_text_dev2(rng: np.random.Generator, x: str, y: str) -> str:
     """A coordinate hint in the scene frame (metres); the numbers are x and y, sometimes padded ('2' -> '2.0')
     or with a typographic minus."""
 
@@ -332,7 +333,7 @@ def _numbered(rng, res: list[str]) -> str:
     return _pick(rng, (" ", "; ")).join(f"{i}) {r}" for i, r in enumerate(res, 1))
 
 
-def render_instruction_heldout(rng: np.random.Generator, res: list[str], order: str) -> str:
+def render_instruction_dev2(rng: np.random.Generator, res: list[str], order: str) -> str:
     """A whole instruction over rendered goals; strict texts state the order, free ones that it is open."""
     v = lambda: _pick(rng, VERBS_HELDOUT)[0]  # noqa: E731
     pp = lambda: _pick(rng, VERBS_HELDOUT)[2]  # noqa: E731
