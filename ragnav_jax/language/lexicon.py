@@ -85,7 +85,9 @@ DETERMINERS = frozenset(
 # Noun phrases made only of these words name no goal ("these", "the following", "all of them").
 FILLER_NOUNS = frozenset(
     "it them that this there here one ones these those following each both all everything of three two four "
-    "five places place spots spot locations objects things items targets goals stops waypoints ones them".split()
+    "five places place spots spot locations objects things items targets goals stops waypoints ones them route routes "
+    "itinerary tour trip plan list circuit errands rounds order sequence task tasks job mission request "
+    "instructions agenda".split()
 )
 PRONOUN_ANCHORS = frozenset("it that this them there one".split())
 
@@ -173,7 +175,7 @@ for _v in ("share", "shares", "sharing", "shared"):
 RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "
     "resting found right just directly immediately somewhere mounted hanging kept rests hangs perched parked "
-    "stored stationed installed".split()
+    "stored stationed installed sat propped tucked pushed sited".split()
 )
 
 # Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".
@@ -273,6 +275,8 @@ COMPARATOR_PHRASES: dict[str, str] = {
     "approx.": "approx", "~": "approx", "circa": "approx", "nearly": "approx", "close to": "approx",
     "near": "approx", "exactly": "approx", "=": "approx", "equal to": "approx", "of about": "approx",
     "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
+    "in the neighbourhood of": "approx", "in the neighborhood of": "approx", "in the vicinity of": "approx",
+    "short of": "lt", "shy of": "lt", "topping": "gt", "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
 }
 _NEGATABLE = {
     "gt": ("above", "over", "greater than", "more than", "higher than", "bigger than", "larger than", "exceeding",

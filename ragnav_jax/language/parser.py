@@ -116,7 +116,8 @@ _MINUS = re.compile(rf"\b(?:minus|negative)\s+(?=\d|\.\d|(?:{_NW_ALT})\b)")  # "
 _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|°|percent\b|per\s+cent\b|%))")
 
 _LOC_LEAD = (
-    r"(?:(?:\b(?:which|that)\s+is\s+|\blocated\s+|\bpositioned\s+|\bsituated\s+|\bplaced\s+)?"
+    r"(?:(?:\b(?:which|that)\s+is\s+|\bthat's\s+)?(?:\b(?:located|positioned|situated|placed|found|sitting|standing|set"
+    r"|sat|lying|resting|kept|parked|stationed)\s+)?"
     r"\b(?:at|near|around|by|close\s+to|close\s+by|next\s+to|in\s+the\s+(?:vicinity|neighbou?rhood)\s+of"
     r"|not\s+far\s+from)\s+)?"
     r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
@@ -141,16 +142,17 @@ _LOC2 = re.compile(
 
 _S_LEAD = r"(?:\b(?:with|having|that\s+has|which\s+has|whose|where)\s+(?:(?:an?|the|its|their)\s+)?)?"
 _SENS_A = re.compile(
-    _S_LEAD + rf"(?:\b(?:current|measured)\s+)?(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|measurement))?"
+    _S_LEAD + rf"(?:\b(?:current|measured)\s+)?(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?"
     r"(?:\s+(?:is|of|reads|reading|at|that\s+is|which\s+is|measuring|measures|showing|shows|registering))?"
     rf"\s*(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST
 )
 _SENS_B = re.compile(
     r"(?:\b(?:with|having|at|of|showing|reading)\s+(?:an?\s+)?)?"
     rf"(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST + rf"\s*(?P<rd>{READ_ALT})"
+    + POST.replace("?P<post>", "?P<post2>")  # ".48 NDVI or so"
 )
 _SENS_RANGE = re.compile(
-    _S_LEAD + rf"(?:(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?\s+(?:(?:is|of|reading)\s+)?)?"
+    _S_LEAD + rf"(?:(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?\s+(?:(?:is|of|reading)\s+)?)?"
     rf"\bbetween\s+(?P<lo>{NUM}){_NUM_END}\s*(?P<u1>{UNIT})?\s*(?:and|to|-)\s*(?P<hi>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?"
 )
 _DECIMAL_COMMA = re.compile(r"(?P<k>⟪[a-z]+⟫)\s*(?P<rest>,\d+)")
@@ -162,7 +164,8 @@ _COMPARATIVE = re.compile(
 _VERB_BEFORE_SENSOR = re.compile(
     r"\b(?:(?:that|which|who)\s+)?(?:(?:is|are)\s+)?(?:currently\s+)?"
     r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
-    r"|operates|kept|set|heated|cooled|holding|holds|staying|stays)(?:\s+(?:at|to))?\s+(?=(?P<k>⟪[a-z]+⟫))"
+    r"|operates|kept|set|heated|cooled|holding|holds|staying|stays|scoring|scores|rated|rating|hovering|hovers"
+    r"|sitting|sits)(?:\s+(?:at|to|around))?(?:\s+the)?\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -171,10 +174,10 @@ _SENS_C = re.compile(
 )
 _SUPER_READ = re.compile(
     r"(?:\b(?:with|having|that\s+has|which\s+has|showing|of)\s+)?(?:\b(?:the|its)\s+)?"
-    rf"(?P<ext>{EXT_ALT})(?:\s+|-)(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?\b"
+    rf"(?P<ext>{EXT_ALT})(?:\s+|-)(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?\b"
 )
 _SUPER_READ2 = re.compile(
-    rf"\b(?:whose|where\s+the|with\s+(?:the|an?|its))\s+(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level))?"
+    rf"\b(?:whose|where\s+the|with\s+(?:the|an?|its))\s+(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?"
     rf"\s+is\s+(?:the\s+)?(?P<ext>{EXT_ALT})\b"
 )
 _SUPER_ADJ = re.compile(
@@ -217,6 +220,13 @@ _FREE = re.compile(
     r"|\b(?:in\s+)?no\s+(?:specific|set|fixed|required|special)\s+(?:order|sequence)"
     # "which one comes first doesn't matter", "it does not matter which you visit first"
     r"|\b(?:which|what)\b[^.;:,!?⟪]{0,40}?\b(?:does\s+not|doesn't|do\s+not|don't|won't|will\s+not)\s+matter\b"
+    # "whichever way round you like", "order them however you like", "any order will do", "you decide the order"
+    r"|\b(?:in\s+)?(?:whichever|whatever|any)\s+way\s+(?:round|around)(?:\s+you\s+(?:like|want|prefer|choose|wish|fancy))?"
+    r"|\b(?:order|sequence|arrange)\s+(?:them|these|those|it|things|the\s+(?:visits|stops))\s+(?:however|as|any\s+way|whichever\s+way"
+    r"|in\s+any\s+way)(?:\s+you\s+(?:like|want|prefer|see\s+fit|wish|fancy|choose))?"
+    r"|\bany\s+(?:order|sequence)\s+(?:will\s+do|is\s+(?:fine|ok|okay|good)|works)"
+    r"|\b(?:you|u)\s+(?:decide|choose|pick)\s+(?:on\s+)?the\s+(?:order|sequence)"
+    r"|\b(?:there\s+is|there's)\s+no\s+(?:required|fixed|set|particular|specific|special|preferred)\s+(?:order|sequence)(?:\s+here)?"
     r"|\b(?:it\s+)?(?:does\s+not|doesn't|won't|will\s+not)\s+matter\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
 )
 # Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
@@ -317,6 +327,102 @@ def _number_words(s: str) -> str:
 
 
 # ----------------------------------------------------------------------------------------------------
+# Canonical forms: surface variants of English that carry no meaning of their own for the task chain are
+# rewritten before anything is read. Each rule is a general construction, not a template's wording.
+
+_ORD_ALT = "|".join(L.ORDINAL_WORDS)
+_PRON_OBJ = r"(?:that\s+one|this\s+one|that\s+spot|that\s+place|it|there|them|that|this)"
+_CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for rx, rep in (
+    # List markers: "1) the kiln 2) the loom", "stop 2: the loom", "(a) the kiln", bullets; the numbers are
+    # positions in a list, not values.
+    (r"(?:(?<=^)|(?<=[\s:;]))(?:(?:\(?\d{1,2}\)|\(?[a-h]\)|\d{1,2}\.|#\d{1,2}:?)(?=\s*(?:the|a|an|my|your|our)\b)|[•·*▪►‣]"
+     r"|(?:stop|step|goal|stage|leg|destination|item|target|waypoint|no\.?|number)\s+(?:#\s*)?\d{1,2}\s*[:.)-])\s*",
+     "; "),
+    (rf"(?:(?<=^)|(?<=[\s;.]))(?:the\s+)?(?:{_ORD_ALT})\s+(?:stop|destination|goal|target|leg|waypoint|port\s+of\s+call)"
+     r"\s*:", "; "),
+    (r"\b(?P<w>next|first)\s+(?:up|off)\b", r"\g<w>"),
+    (r"\b(?:both|each\s+of|all\s+of)\s+(?=the\b)", ""),  # "visit both the kiln and the loom"
+    # Light verbs: "take a (quick) look at", "have a peek inside", "make a detour to", "pay a visit to".
+    (r"\b(?:take|have|give|get|taking|having|giving|getting|grab)\s+(?:a|an)\s+(?:(?:quick|brief|little|close|closer|good"
+     r"|proper)\s+)?(?:look|peek|glance|peep|gander|squint|glimpse)\s+(?:at|in|inside|into|over)\b"
+     r"|\b(?:make|making|pay|paying|do|doing)\s+(?:a|an)\s+(?:(?:quick|brief|little|short)\s+)?(?:stop|trip|detour|visit"
+     r"|stopover|run|dash)\s+(?:at|to|by|in|over\s+to)\b", "visit"),  # "next up, ...", "first off, ..."
+    # Arrows and similar marks of a sequence: "the kiln -> the loom".
+    (r"\s*(?:→|⟶|➔|➜|➝|=>|->|»|>>)\s*", " then "),
+    # "the kiln currently switched on": a time adverb before a state after a noun is its copula.
+    (rf"(?<![\w'])(?P<cop>(?:is|are|'s|stays?|remains?|be)\s+)?(?:currently|presently|right\s+now|at\s+the\s+moment"
+     rf"|now)\s+(?={_alt(L.STATE_PHRASES)})", lambda m: m.group("cop") or "that is "),
+    # Time adverbs say when a state holds, and it holds now: "which is open at the moment".
+    (r"\b(?:at\s+the\s+moment|at\s+present|right\s+now|just\s+now|as\s+of\s+now|for\s+now|at\s+this\s+time"
+     r"|currently|presently)\b", " "),
+    # Apposition markers: "(i.e. the red one)", "- namely the oak one -", ", specifically the big one".
+    (r"(?:(?<=[(\[,])|(?<=\s-))\s*(?:i\.?\s?e\.?|namely|specifically|that\s+is\s+to\s+say|in\s+other\s+words|to\s+be\s+(?:precise"
+     r"|exact|specific)|more\s+precisely|precisely|viz\.?)(?:\s*,)?\s+", " "),
+    # "with the kettle (either) on it or beside it": the pronoun relations only restate "with".
+    (r"(?P<c1>\s*,)?\s*(?:either\s+)?(?:on(?:\s+top\s+of)?|beside|next\s+to|near|by|alongside)\s+(?:it|them)\s+or\s+"
+     r"(?:on(?:\s+top\s+of)?|beside|next\s+to|near|by|alongside)\s+(?:it|them)\b(?P<c2>\s*,)?",
+     lambda m: "," if m.group("c2") and not m.group("c1") else " "),
+    # "the kiln set next to the loom", "that's set on the shelf": "set" before a place is a participle, except
+    # in the nouns English makes with it ("the drum set beside the sofa").
+    (r"\b(?<!drum\s)(?<!chess\s)(?<!tea\s)(?<!train\s)(?<!tool\s)(?<!lego\s)(?<!box\s)(?<!gym\s)(?<!play\s)(?<!paint\s)"
+     r"(?<!dinner\s)(?<!radio\s)(?<!tv\s)set\s+(?=(?:next|beside|on|by|near|under|in|behind|opposite|against|close|atop"
+     r"|inside|alongside|above|below|beneath|underneath|up\s+(?:on|by|near|against))\b)", "located "),
+    # "the coolest-running kiln": the superlative of how it runs is the superlative.
+    (rf"\b(?P<sup>{_alt(L.SUPERLATIVES)})-(?:running|reading|measuring|looking|operating)\b", r"\g<sup>"),
+    (r"\bhaving\s+(?=(?:the|a|an)\b)", "with "),  # "the desk having the lamp": "having" before a noun is "with"
+    # A participle or subordinate clause about the previous goal only sequences: "having reached that one,",
+    # "once you've looked at it,", "after dropping by there,".
+    (rf"\b(?:having|once|when|after|upon)\b[^,.;:!?⟪()]{{0,40}}?\b{_PRON_OBJ}\s*(?=[,.;:!?]|$)", " then "),
+    # "make the kiln your first stop, the loom your second": the ordinal says what the order says already.
+    (rf"\b(?:as\s+)?your\s+(?:very\s+)?(?:{_ORD_ALT})(?:\s+(?:stop|destination|goal|target|one|port\s+of\s+call))?\b",
+     " "),
+    # "in the room that also holds the easel": the room of another object.
+    (r"\bin\s+the\s+(?:same\s+)?room\s+(?:that|which|where)\s+(?:also\s+)?(?:has|holds|contains|houses|includes|features"
+     r"|there\s+is|there's)\b", "in the room containing"),
+    (r"\bin\s+the\s+(?:same\s+)?room\s+(?:that|which)\s+(?:also\s+)?(?:has|holds|contains|houses)\s+(?=the\b)",
+     "in the room containing "),
+    # "that would be great", "it'd be lovely": a closing courtesy.
+    (r"(?:[,;]\s*)?\b(?:that|it|this)\s*(?:would|'d|will|'ll)\s+(?:really\s+)?be\s+(?:great|lovely|ideal|perfect|helpful"
+     r"|wonderful|fantastic|brilliant|appreciated|much\s+appreciated|nice|awesome|super|amazing|good)\b", " "),
+    # Coordinates written along the axes: "7.4 m along the x-axis and 2.9 m along the y-axis (from the origin)".
+    (rf"(?P<x>{NUM})\s*(?:m|metres?|meters?)?\s+along\s+the\s+x(?:-|\s)?axis\s*,?\s*(?:and\s+)?(?P<y>{NUM})\s*"
+     r"(?:m|metres?|meters?)?\s+along\s+the\s+y(?:-|\s)?axis(?:\s+(?:from|of|measured\s+from)\s+the\s+origin)?",
+     r"at (\g<x>, \g<y>)"),
+    # A superlative's scope: "the warmest among those in the den", "the coldest of them all in the den".
+    (r"\s*\b(?:among|amongst|of|out\s+of)\s+(?:all\s+)?(?:those|these|them|the\s+ones)(?:\s+(?:that\s+are|which\s+are"
+     r"|located|positioned|found|kept|standing|sitting))?(?=\s+(?:in|inside|within|over\s+in)\b)", " "),
+    (r"\bthe\s+\(\s*x\s*,\s*y\s*\)\s+(?:position|coordinates?|point|location|spot)\s+(?=[(\[])", " "),
+    (r"\b(?:the\s+)?(?:point|spot|position|location|place)\s+(?:with|where|whose)\s+(?=x\b)", " "),
+    (r"\b(?P<axis>[xy])\s*(?:≈|~|≃|=~)\s*", r"\g<axis>="),
+))
+
+
+def _singular(word: str) -> str:
+    """'plants' -> 'plant', 'batteries' -> 'battery', 'benches' -> 'bench' (the noun after 'of the')."""
+    if word.endswith("ies") and len(word) > 4:
+        return word[:-3] + "y"
+    if re.search(r"(?:ch|sh|x|z|ss)es$", word):
+        return word[:-2]
+    return word[:-1] if word.endswith("s") and not word.endswith("ss") else word
+
+
+# "the healthiest of the plants", "the most humid of all the rooms' dehumidifiers": a superlative over a plural
+# noun phrase names one of them ("the healthiest plant").
+_SUPER_OF = re.compile(
+    rf"\b(?P<sup>{_alt(L.SUPERLATIVES)}|(?:most|least)\s+{_alt(L.GRADABLE)}|(?:{_alt(L.EXTREME_WORDS)})(?:\s+|-){READ_ALT})"
+    r"(?:\s+(?:one|ones))?\s+(?:out\s+)?of\s+(?:all\s+)?(?:(?:the|those|these|your|my|our)\s+)?"
+    r"(?P<np>(?:[a-z][\w'-]*\s+){0,3}?[a-z][\w-]*?s)\b(?!\s*(?:of|'s)\b)"
+)
+
+
+def _canonical(s: str) -> str:
+    for rx, rep in _CANONICAL:
+        s = rx.sub(rep, s)
+    s = _SUPER_OF.sub(lambda m: f"{m.group('sup')} {' '.join([*m.group('np').split()[:-1], _singular(m.group('np').split()[-1])])}", s)
+    return re.sub(r"\s+", " ", s).strip()
+
+
+# ----------------------------------------------------------------------------------------------------
 # Placeholders: coordinates and sensor phrases are cut out before splitting.
 
 
@@ -397,7 +503,8 @@ def _cut(s: str, marks: _Marks) -> str:
 
     def with_reading(m: re.Match) -> str:
         rd = L.READING_NAMES[re.sub(r"\s+", " ", m.group("rd"))]
-        c = _sensor(rd, _cmp_code(m.group("cmp"), m.group("post")), m.group("num"), m.group("unit"), m.group(0))
+        post = m.group("post") or m.groupdict().get("post2")
+        c = _sensor(rd, _cmp_code(m.group("cmp"), post), m.group("num"), m.group("unit"), m.group(0))
         return marks.add(m.group(0), sensor=c)
 
     def comparative(m: re.Match) -> str:
@@ -580,7 +687,7 @@ def _strip_phrases(tokens: list[str], index: dict, at_start: bool = True) -> tup
 
 
 _MODAL_AFTER_YOU = frozenset("to could would can will might may should must".split())
-_INTRO_PREPS = frozenset("to towards toward into onto for past".split())
+_INTRO_PREPS = frozenset("to towards toward into onto for past at".split())
 
 
 def _verb_tail(tokens: list[str]) -> list[str]:
@@ -660,7 +767,9 @@ def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
             tokens, changed = tokens[2:], True  # "then over to the loom"
     # An unknown verb before a determiner ("photograph the fridge", "scurry over to the fridge"): drop it.
     for k in range(1, min(5, len(tokens) - 1) if _boundary_at(tokens, 0) is None else 0):
-        if tokens[k] in ("the", "a", "an", "my", "our", "your"):
+        if tokens[k] in ("a", "an") and k + 3 < len(tokens) and tokens[k + 2] in L.VERB_PREPOSITIONS:
+            continue  # a light verb: "take a look at [the kiln]", "pay a visit to [the loom]"
+        if tokens[k] in ("the", "a", "an", "my", "our", "your", "this", "these", "those", "all", "each", "both"):
             before = tokens[:k]
             if before[0] in L.DETERMINERS:
                 break
@@ -668,7 +777,9 @@ def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
                              for i, w in enumerate(before)):
                 tokens = tokens[k:]
             elif (_plain_word(before[0]) and before[-1] in _INTRO_PREPS
-                  and all(w in L.VERB_PARTICLES for w in before[1:-1])):
+                  and (all(w in L.VERB_PARTICLES for w in before[1:-1])
+                       or (len(before) == 4 and before[1] in ("a", "an") and _plain_word(before[2])))):
+                # "scurry over to [the kiln]", "take a look at [the kiln]"
                 tokens = tokens[k:]
             break
     led = len(tokens) < n0
@@ -990,7 +1101,7 @@ def parse_instruction(text: str) -> TaskChain:
     if m:
         raise ParseError(f"could not read the number starting '{m.group(0)}'")
     marks = _Marks()
-    s = _number_words(s)
+    s = _number_words(_canonical(s))
     s = _FIRST_OF_ALL.sub("first", s)
     s = _cut(s, marks)
     order = "strict"
@@ -1004,6 +1115,10 @@ def parse_instruction(text: str) -> TaskChain:
     segments = [(parts[k - 1].strip() if k else "", parts[k]) for k in range(0, len(parts), 2)]
     pieces = [_parse_segment(seg, marks, re.sub(r"\s+", " ", conn)) for conn, seg in segments if seg.strip()]
 
+    # A heading before a colon names nothing: "route to take:", "first things first:", "i need two things seen:".
+    pieces = [p for k, p in enumerate(pieces) if not (
+        k + 1 < len(pieces) and pieces[k + 1].connector == ":" and not p.det and not p.locations and not p.sensors
+        and not p.room and (p.node is None or not p.node.relations))]
     goals: list[_Piece] = []
     pending: _Piece | None = None
     for idx, p in enumerate(pieces):
@@ -1124,4 +1239,6 @@ def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
         into.node.relations += extra.node.relations
     into.texts = (extra.texts + into.texts) if prefix else (into.texts + extra.texts)
     into.clause = (into.clause or extra.clause) if prefix else (extra.clause or into.clause)
+    if into.clause is not None and not into.clause.words and into.node is not None:
+        into.clause = into.node  # "the kiln - the red one - which is lit and ...": a noun-less piece's clause is the goal's
     return into
