@@ -68,6 +68,13 @@ def test_rooms_by_label_else_by_recorded_names(minilm, apartment):
     assert v.rooms_match("music room", view) == {"r1", "r3"}  # r3 recorded nothing: unknown, not excluded
     assert v.rooms_match("workshop", view) == {"r2", "r3"}
     assert v.rooms_match("bedroom", view) == {"r4", "r5", "r3"}  # the summariser's own label: both bedrooms
+    # a choice among the rooms in question: of the two rooms holding a lamp, the workshop is r2, even
+    # where the house-wide best fit to "workshop" lies elsewhere
+    names2 = {**names, "r6": ("tool chest", "workbench", "toolbox", "table saw", "soldering station")}
+    view2 = dataclasses.replace(view, room_names=names2)
+    assert "r2" not in v.rooms_match("workshop", view2)
+    assert v.rooms_match("workshop", view2, among={"r1", "r2"}) == {"r2", "r3"}
+    assert v.rooms_match("music room", view2, among={"r1", "r2"}) == {"r1", "r3"}
 
 
 def test_verdicts_on_the_apartment_read_no_ground_truth_category(minilm, apartment):

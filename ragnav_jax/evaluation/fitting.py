@@ -97,10 +97,15 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
                     kind_rows.append((x, kind in attrs and said(attrs[kind], p.text)))
         rooms = {r.id: r for r in scene.rooms}
         for t in sorted({r.type for r in scene.rooms}):  # as a room name the summariser does not know (a seen
-            # type would be matched by its label): the margin is calibrated for the encoder's room scores
+            # type would be matched by its label): the margin is calibrated for the encoder's room scores,
+            # as the check uses them, to choose among the rooms holding instances of one category
             sc = v.room_scores(t, view.room_names)
-            top = max(sc.values())
-            room_rows += [(top - x, rooms[r].type == t) for r, x in sc.items()]
+            for c in cats:
+                among = {o.room for o in scene.objects if o.category == c and o.room in sc}
+                if len(among) < 2 or not any(rooms[r].type == t for r in among):
+                    continue
+                top = max(sc[r] for r in among)
+                room_rows += [(top - sc[r], rooms[r].type == t) for r in sorted(among)]
     return (np.array(head_rows, np.float64).reshape(-1, 5), np.array(kind_rows, np.float64).reshape(-1, 2),
             np.array(room_rows, np.float64).reshape(-1, 2))
 

@@ -17,8 +17,10 @@ against that:
 - attributes and states: said in one of the looks (whole words; a hyphenated value such as
   "gold-framed" by its first part): at close range, an attribute nobody sees is not there;
 - room: the rooms the forest's summariser labels with exactly the room phrase; for a room name no
-  prototype knows, the rooms whose recorded names fit the phrase through the encoder within
-  `room_margin` of the best (`room_scores`);
+  prototype knows, a choice among the rooms the phrase could tell apart (the object's own and those of
+  the recorded objects that pass every other check): the object's room must fit the phrase through the
+  encoder within `room_margin` of the best of them (`room_scores`). "The lamp in the workshop" asks
+  which lamp's room is the workshop, which is easier than which room of the house is;
 - structured checks: coordinate hints, sensor thresholds and superlatives (ranked among the recorded
   instances that pass the same checks), relations by position against recorded anchors that pass the
   name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
@@ -209,16 +211,17 @@ class Verifier:
         three best-matching names; chosen on the seen split, against whole-description embeddings)."""
         return {r: float(np.sort(self.cos([room], list(ns))[0])[::-1][:3].mean()) for r, ns in names.items() if ns}
 
-    def rooms_match(self, room: str, view: SceneView) -> set[str]:
+    def rooms_match(self, room: str, view: SceneView, among: set[str] | None = None) -> set[str]:
         """Room ids the room phrase may mean: the rooms the forest's summariser labels with exactly that type
-        when there are any (a house may have two bedrooms); otherwise the rooms whose recorded names fit it
-        within room_margin of the best (`room_scores`), so room names no prototype knows work. Rooms with no
-        recorded names are unknown and pass."""
+        when there are any (a house may have two bedrooms); otherwise, of the rooms `among` (default: all),
+        those whose recorded names fit it within room_margin of the best of them (`room_scores`), so room
+        names no prototype knows work. Rooms with no recorded names are unknown and pass."""
         out = {r for r, ns in view.room_names.items() if not ns}
         labelled = {r for r, t in view.room_type.items() if t == room}
         if labelled:
             return out | labelled
-        sc = self.room_scores(room, view.room_names)
+        names = {r: ns for r, ns in view.room_names.items() if among is None or r in among}
+        sc = self.room_scores(room, names)
         top = max(sc.values(), default=0.0)
         return out | {r for r, x in sc.items() if x >= top - self.p.room_margin}
 
@@ -263,10 +266,10 @@ class Verifier:
             ok &= has
             if not c.is_superlative:
                 ok &= np.array([h and sensor_holds(c, o.readings[c.reading]) for h, o in zip(has, objs)])
-        if sg.room is not None:
-            rooms = self.rooms_match(sg.room, view)
-            in_room = np.array([o.room in rooms for o in objs])
-            ok &= in_room
+        if sg.room is not None:  # a choice among the object's room and those of recorded objects that pass
+            recorded = {objs[i].room for i in pool if ok[i]}
+            ok &= np.array([bool(ok[i]) and o.room in self.rooms_match(sg.room, view, recorded | {o.room})
+                            for i, o in enumerate(objs)])
         for c in sg.sensors:
             if c.is_superlative:  # rank among the recorded instances passing the same checks (same room)
                 rivals = [i for i in set(pool) | set(np.flatnonzero(ok).tolist()) if ok[i]]

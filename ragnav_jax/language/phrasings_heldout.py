@@ -103,13 +103,38 @@ _REL: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "right_of": (("just right of {a}", "on the right of {a}", "to {p} right"),
                  ("sits just right of {a}", "is to {p} right")),
 }
+# "with" as an object relative, the anchor first ("the desk that the monitor is on or near"), or, where the
+# anchor has clauses of its own, last ("the desk that either supports or stands near the monitor that ...").
 _WITH = ("{a} is on or near", "{a} rests on or stands near", "{a} sits on or close to")
+_WITH_LAST = "either supports or stands near {a}"
+_ROOM_WITH_LAST = (("in the room where you'll find {a}",), ("is in the room where you'll find {a}",))
+_PLURAL_VERBS = {"is": "are", "has": "have", "sits": "sit", "stands": "stand", "lives": "live", "rests": "rest",
+                 "supports": "support"}
+
+
+def is_plural(head: str) -> bool:
+    """Whether a head noun takes a plural verb ('drums', 'shelves', 'electronics'); singular nouns ending in
+    -ss, -us, -is and a few others are not."""
+    last = head.split()[-1].lower()
+    return (last.endswith("s") and not last.endswith(("ss", "us", "is"))
+            and last not in ("lens", "gas", "canvas", "atlas", "chaos"))
+
+
+def _agree(vp: str, plural: bool) -> str:
+    """A verb phrase for a plural subject: 'is switched on' -> 'are switched on', 'rests on or stands near'."""
+    if not plural:
+        return vp
+    words = vp.split(" ")
+    out = [_PLURAL_VERBS.get(w, w) if i == 0 or words[i - 1] in ("or", "and", "either") else w
+           for i, w in enumerate(words)]
+    return " ".join(out)
 
 
 def _anchor(rng, t: Target) -> tuple[str, bool]:
     """(anchor noun phrase, whether it ends with its head noun, so that "the sofa's left" can be said)."""
     states = [a for a in t.attributes if is_state(a)]
     mods = [a for a in t.attributes if not is_state(a)]
+    plural = is_plural(t.head)
     pre = []
     if len(states) == 1 and states[0] in _PRENOMINAL and rng.uniform() < 0.6:
         pre, states = states, []
@@ -117,10 +142,11 @@ def _anchor(rng, t: Target) -> tuple[str, bool]:
     clauses = []
     if states:
         s = " and ".join(states)
-        clauses.append(f"has been {s}" if all(x in _PARTICIPLE for x in states) and rng.uniform() < 0.5 else f"is {s}")
-    rels = [_relation(rng, r, clause=bool(clauses) or rng.uniform() < 0.6) for r in t.relations]
+        vp = f"has been {s}" if all(x in _PARTICIPLE for x in states) and rng.uniform() < 0.5 else f"is {s}"
+        clauses.append(_agree(vp, plural))
+    rels = [_relation(rng, r, bool(clauses) or rng.uniform() < 0.6, plural) for r in t.relations]
     if clauses or any(k != "red" for k, _ in rels):
-        parts = clauses + [f"is {x}" if k == "red" else x for k, x in rels]
+        parts = clauses + [f"{_agree('is', plural)} {x}" if k == "red" else x for k, x in rels]
         return f"{out} that " + " and ".join(_strip_that(p, i) for i, p in enumerate(parts)), False
     if rels:
         return out + " " + " and ".join(x for _, x in rels), False
@@ -132,17 +158,24 @@ def _strip_that(vp: str, i: int) -> str:
     return vp[5:] if i == 0 and vp.startswith("that ") else vp
 
 
-def _relation(rng, r: Relation, clause: bool) -> tuple[str, str]:
-    """('red', reduced phrase) or ('rel', verb phrase) or ('obj', 'that X is on or near') for one relation."""
+def _relation(rng, r: Relation, clause: bool, plural: bool = False) -> tuple[str, str]:
+    """('red', reduced phrase), ('rel', verb phrase agreeing with a plural target) or ('obj', 'that X is on or
+    near') for one relation. An anchor with clauses of its own goes last."""
     a, ends_with_head = _anchor(rng, r.anchor)
     if r.type == "with":
-        return "obj", "that " + _pick(rng, _WITH).format(a=a)
+        if not ends_with_head:
+            return "rel", _agree(_WITH_LAST, plural).format(a=a)
+        return "obj", "that " + _agree(_pick(rng, _WITH), is_plural(r.anchor.head)).format(a=a)
     red, vps = _REL.get(r.type, ((r.type.replace("_", " ") + " {a}",), ("is " + r.type.replace("_", " ") + " {a}",)))
+    if r.type == "in_room_with" and not ends_with_head:
+        red, vps = _ROOM_WITH_LAST
     forms = vps if clause else red
     if not ends_with_head:
         forms = tuple(f for f in forms if "{p}" not in f) or forms
     form = _pick(rng, forms)
-    return ("rel" if clause else "red"), form.format(a=a, p=a + "'s")
+    if clause:
+        return "rel", _agree(form, plural).format(a=a, p=a + "'s")
+    return "red", form.format(a=a, p=a + "'s")
 
 
 def _join_clauses(rng, clauses: list[tuple[str, str]]) -> str:
@@ -220,6 +253,7 @@ def _np(rng, t: Target, room: str | None, adj: str = "", tail: str = "", hint: s
     the relations last (so nothing can attach to an anchor). After a relative clause only clauses follow."""
     states = [a for a in t.attributes if is_state(a)]
     mods = [a for a in t.attributes if not is_state(a)]
+    plural = is_plural(t.head)
     pre_room, pre_state = "", ""
     parens: list[str] = []
     reds: list[str] = []
@@ -241,7 +275,7 @@ def _np(rng, t: Target, room: str | None, adj: str = "", tail: str = "", hint: s
         elif k == "obj":
             clauses.append(("obj", piece))
         else:
-            clauses.append(piece)
+            clauses.append((piece[0], _agree(piece[1], plural)))
     if mods and not parens and rng.uniform() < 0.2:
         parens.append(" ".join(mods))
         mods = []
@@ -257,7 +291,7 @@ def _np(rng, t: Target, room: str | None, adj: str = "", tail: str = "", hint: s
         else:
             pron = "that" if rng.uniform() < 0.6 else "which"
             vp = f"has been {s}" if all(x in _PARTICIPLE for x in states) and rng.uniform() < 0.6 else f"is {s}"
-            clauses.insert(0, (pron, vp))
+            clauses.insert(0, (pron, _agree(vp, plural)))
     if hint:
         m = re.match(r"(that|which|whose) (.*)", hint)
         if m:
@@ -267,18 +301,23 @@ def _np(rng, t: Target, room: str | None, adj: str = "", tail: str = "", hint: s
     if tail and tail_kind != "paren":
         m = re.match(r"(that|which|whose) (.*)", tail)
         if m:
-            clauses.append((m.group(1), m.group(2)))
+            clauses.append((m.group(1), m.group(2) if m.group(1) == "whose" else _agree(m.group(2), plural)))
         else:
             reds.append(tail)
     rel_clause = bool(clauses) or (len(t.relations) == 1 and rng.uniform() < 0.45)
     pron = "that" if rng.uniform() < 0.6 else "which"
     rel_red = []
     for r in t.relations:
-        k, text = _relation(rng, r, rel_clause)
+        k, text = _relation(rng, r, rel_clause, plural)
         if k == "red":
             rel_red.append(text)
         else:
             clauses.append(("obj", text) if k == "obj" else (pron, text))
+    room_red = f"in the {room}"
+    if room_red in reds and clauses:  # "the freezer in the pantry that's open": the room would look open
+        reds.remove(room_red)
+        at = sum(1 for c in clauses[:1] if c[1].startswith(("is ", "are ", "has been ", "have been ")))
+        clauses.insert(at, (pron, _agree(f"is {room_red}", plural)))
     head = " ".join(x for x in ("the", pre_room, adj, pre_state, *mods, t.head) if x)
     out = head
     if parens:  # at most one: the room, attribute and state pieces take a parenthesis only while none is set
@@ -304,17 +343,22 @@ def _superlative(rng, sg: Subgoal, adj: str, form: str, tail: str) -> str | None
     mods = " ".join(a for a in t.attributes if not is_state(a))
     noun = " ".join(x for x in (mods, t.head) if x)
     room = sg.room
+    be = "are" if is_plural(t.head) else "is"
+    where = f" in the {room}" if room else ""
+    if form == "comparative" and be == "are":
+        form = "whichever"
     if form == "prefix":
         k = int(rng.integers(4 if room else 2))
         if k == 0:
-            return f"whichever {noun}{f' in the {room}' if room else ''} is {_pick(rng, ('', 'the '))}{adj}"
-        if k == 1:
-            return f"the {adj} {noun}" + (f" in the {room}" if room else "")
-        if k == 2:
+            form = "whichever"
+        elif k == 1:
+            return f"the {adj} {noun}{where}"
+        elif k == 2:
             return f"the {room}'s {adj} {noun}"
-        return f"the {adj} {noun} you can find in the {room}"
+        else:
+            return f"the {adj} {noun} you can find in the {room}"
     if form == "whichever":
-        return f"whichever {noun}{f' in the {room}' if room else ''} is {_pick(rng, ('', 'the '))}{adj}"
+        return f"whichever {noun}{where} {be} {_pick(rng, ('', 'the '))}{adj}"
     if form == "comparative":
         comp = _COMPARATIVE[adj]
         if room:
@@ -442,7 +486,10 @@ def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tupl
         gap = "" if sym == "~" else " "
         return "", f"({n} {sym}{gap}{amount})", SensorConstraint(rd, c.comparator, value, code)
     frame = "is" if k in (1, 2) else "of"
-    form = _pick(rng, _CMP[c.comparator][frame])
+    forms = _CMP[c.comparator][frame]
+    if c.value < 0:  # "past -18" could go either way
+        forms = tuple(f for f in forms if not f.startswith("past"))
+    form = _pick(rng, forms)
     if "{ish}" in form and not (rd != "ndvi" and float(_fmt_value(rd, c.value)).is_integer()
                                 and float(_fmt_value(rd, c.value)) >= 1):
         form = _CMP[c.comparator][frame][0]
@@ -576,7 +623,8 @@ def _strict(rng, res: list[str]) -> str:
     busy = _busy(res)
     sep = "; " if busy else ", "
     p = _pick(rng, ("", "", "please "))
-    ks = list(range(8)) + ([8, 8] if n == 2 else [9] if n == 3 else [])
+    plain = not any(re.search(r"\d|\b(that|which|whose|whichever|than)\b", r) for r in res)
+    ks = list(range(0 if plain else 1, 8)) + ([8, 8] if n == 2 else [9] if n == 3 else [])
     k = _pick(rng, ks)
     if k == 0:  # ordinal adverbs: "A first, B second and C last"
         head = [f"{r} {_ORD[i]}" for i, r in enumerate(res[:-1])]
@@ -591,7 +639,8 @@ def _strict(rng, res: list[str]) -> str:
         intro = _pick(rng, (f"{p}{v()} these in the order listed", "go through the following in the order given",
                             f"{v()} the following, keeping to this order"))
         marks = _markers(rng, n)
-        return _tidy(f"{intro}: " + "; ".join(f"{m} {r}" for m, r in zip(marks, res)) + ".")
+        colon = ". " if marks[0].endswith(":") else ": "  # "1st: ..." after a sentence, not after a colon
+        return _tidy(f"{intro}{colon}" + "; ".join(f"{m} {r}" for m, r in zip(marks, res)) + ".")
     if k == 3:  # Step one: ...
         return " ".join(_tidy(f"step {_STEP[i]}: {v()} {r}.") for i, r in enumerate(res))
     if k == 4:  # Next stop: ...
