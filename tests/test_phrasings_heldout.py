@@ -170,7 +170,7 @@ def test_hints_carry_the_given_numbers():
         for _ in range(80):
             h = hint_text_heldout(rng, x, y)
             assert read_numbers(h) == [float(x), float(y)], h
-            assert re.findall(r"\b[xy]\b", h) == ["x", "y"], h  # named axes come x first, like the numbers
+            assert re.findall(r"\b[xy]\b", h) in ([], ["x", "y"]), h  # named axes come x first, like the numbers
             forms.add(_NUMBER.sub("#", h))
         assert len(forms) >= 6, forms
 
@@ -247,7 +247,7 @@ def test_room_and_readings_never_share_a_phrase():
         g = render_goal_heldout(rng, Subgoal(0, T("heater"), room=room), prefix, tail)
         assert not re.search(rf"{room} (that|which|whose|\()", g), g
         assert read_numbers(g) == [c.value], g
-    for k in range(200):  # states after a room in a clause: "the freezer in the pantry that's open" never occurs
+    for _ in range(200):  # states after a room in a clause: "the freezer in the pantry that's open" never occurs
         g = render_goal_heldout(rng, Subgoal(0, T("freezer", ("open",)), room="pantry"))
         assert not re.search(r"pantry (that|which)", g), g
 
@@ -314,7 +314,8 @@ def test_reversed_mentions_keep_the_visiting_order():
 
 def _clean(text):
     bad = ("  ", ",,", ", ,", "()", "( )", " ,", ",.", ",;", ";;", ",?", " ;", " ?", " )", "( ", "..", ";,")
-    return not any(b in text for b in bad) and not re.search(r" \.(\s|$)", text) and text == text.strip()
+    return (not any(b in text for b in bad) and not re.search(r" \.(\s|$)|[.?] [a-z]", text)
+            and text == text.strip())
 
 
 _targets = st.recursive(

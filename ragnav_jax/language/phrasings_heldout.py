@@ -208,18 +208,18 @@ _SUP_NAMES = {"temperature_c": ("temp", "temperature"), "humidity_pct": ("humidi
 _EXT = {"max": ("highest", "top"), "min": ("lowest",)}
 
 
-def _super_tails() -> dict[str, tuple[str, str, str]]:
-    """Every superlative tail the sensor renderer writes -> (form, adjective for a fallback, extreme word)."""
+def _super_tails() -> dict[str, tuple[str, str]]:
+    """Every superlative tail the sensor renderer writes -> (form, adjective where the form cannot be used)."""
     out = {}
     for (rd, cmp_), adjs in _SUP_ADJ.items():
         for adj in adjs:
-            out[f"whichever is {adj}"] = ("whichever", adj, "")
-            out[f"that is {_COMPARATIVE[adj]} than any other"] = ("comparative", adj, "")
+            out[f"whichever is {adj}"] = ("whichever", adj)
+            out[f"that is {_COMPARATIVE[adj]} than any other"] = ("comparative", adj)
         for ext in _EXT[cmp_]:
             for n in _SUP_NAMES[rd]:
-                out[f"with the {ext} {n}"] = ("with", adjs[0], "")
+                out[f"with the {ext} {n}"] = ("with", adjs[0])
         for n in _SUP_NAMES[rd]:
-            out[f"whose {n} is the {_EXT[cmp_][0]}"] = ("whose", adjs[0], "")
+            out[f"whose {n} is the {_EXT[cmp_][0]}"] = ("whose", adjs[0])
     return out
 
 
@@ -262,7 +262,7 @@ def _np(rng, t: Target, room: str | None, adj: str = "", tail: str = "", hint: s
     if tail_kind == "paren":
         parens.append(tail[1:-1])
     if room:
-        kinds = ("pos", "rel", "obj") if tail_kind == "rel" else ("pos", "rel", "obj", "paren", "red", "red")
+        kinds = ("pos", "rel", "obj") if tail_kind == "rel" else ("pos", "rel", "obj", "paren", "red")
         if parens:
             kinds = tuple(k for k in kinds if k != "paren")
         k, piece = _room_piece(rng, room, kinds)
@@ -348,12 +348,12 @@ def _superlative(rng, sg: Subgoal, adj: str, form: str, tail: str) -> str | None
     if form == "comparative" and be == "are":
         form = "whichever"
     if form == "prefix":
-        k = int(rng.integers(4 if room else 2))
+        k = int(rng.integers(3 if room else 2))
         if k == 0:
             form = "whichever"
+        elif not room:
+            return f"the {adj} {noun}"
         elif k == 1:
-            return f"the {adj} {noun}{where}"
-        elif k == 2:
             return f"the {room}'s {adj} {noun}"
         else:
             return f"the {adj} {noun} you can find in the {room}"
@@ -368,7 +368,7 @@ def _superlative(rng, sg: Subgoal, adj: str, form: str, tail: str) -> str | None
     if form == "with":
         return f"the {noun} {tail}" + (f" in the {room}" if room else "")
     if form == "whose":
-        return f"the {noun} {tail}" + (f" in the {room}" if room else _pick(rng, ("", " of them all")))
+        return f"the {noun} {tail}" + (f" in the {room}" if room else _pick(rng, ("", " of them all", " of the lot")))
     return None
 
 
@@ -558,14 +558,16 @@ def _tidy(s: str) -> str:
 
 
 def _busy(res: list[str]) -> bool:
-    return any("," in r or " and " in r or ";" in r for r in res)
+    """Whether a plain 'A, B and C' could be misread: a goal has commas or 'and' of its own, or a goal before
+    the last ends in another noun phrase ('the iron near the board and the bag': is the bag an anchor?)."""
+    return any("," in r or " and " in r or ";" in r for r in res) or any(r.count("the ") > 1 for r in res[:-1])
 
 
 def _list(rng, res: list[str]) -> str:
-    """'A, B and C'; semicolons between goals with commas or 'and' of their own."""
+    """'A, B and C'; semicolons (for two goals ', and also' or ', plus') where `_busy`."""
     if _busy(res):
         if len(res) == 2:
-            return f"{res[0]}, and also {res[1]}"
+            return f"{res[0]}{_pick(rng, (', and also ', ', plus '))}{res[1]}"
         return "; ".join(res[:-1]) + "; and " + res[-1]
     if len(res) == 2:
         return f"{res[0]} and {res[1]}"
@@ -596,8 +598,9 @@ def _free(rng, res: list[str]) -> str:
     p = _pick(rng, ("", "", "please "))
     lst = _list(rng, res)
     k = int(rng.integers(8))
+    end = ". " if _busy(res) else "; "  # after a list with semicolons, a sentence of its own
     if k == 0:
-        s = f"{p}{v()} {lst}; I'm not fussed about the order."
+        s = f"{p}{v()} {lst}{end}I'm not fussed about the order."
     elif k == 1:
         s = f"{p}{v()} {lst}. It makes no difference which one you do first."
     elif k == 2:
@@ -610,7 +613,7 @@ def _free(rng, res: list[str]) -> str:
         s = f"the order is flexible: {v()} {lst}."
     elif k == 6:
         s = (f"{p}{v()} {lst} — either one can come first." if n == 2 else
-             f"{p}{v()} {lst}; feel free to shuffle the order.")
+             f"{p}{v()} {lst}{end}{'F' if end == '. ' else 'f'}eel free to shuffle the order.")
     else:
         s = f"would you mind {_pick(rng, VERBS_HELDOUT)[1]} {lst}? You're free to choose the sequence."
     return _tidy(s)
