@@ -9,7 +9,8 @@ the seen generator's own vocabulary: a head noun names an object when `category_
 (category, synonym or hypernym); an attribute is contradicted when the description says another option
 of the same attribute kind; a room phrase names the rooms of that type (scored by the encoder as if
 the summariser did not know the type, so the margin holds for room names it does not know). Each threshold is the grid
-value with the best balanced accuracy. The unseen catalogue is never read (a test checks this).
+value with the best balanced accuracy, except the room gate: the smallest margin to the house-wide best
+room that keeps 95% of the true rooms. The unseen catalogue is never read (a test checks this).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_m
 
 GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
 GRID_MARGIN = np.round(np.arange(0.0, 0.41, 0.02), 2)
+GATE_RECALL = 0.95
 
 
 def balanced_accuracy(pred: np.ndarray, label: np.ndarray) -> float:
@@ -66,7 +68,7 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
     v = Verifier.build(embedder, cfg, VerifierParams())
     v.looks = 1  # one perception per view; `looks` views stand for the memory's records of each object
     houses = _seen_scenes(cfg, scenes, seed)
-    head_rows, kind_rows, room_rows = [], [], []  # (features..., label)
+    head_rows, kind_rows, room_rows, gate_rows = [], [], [], []  # (features..., label)
     for h, scene in enumerate(houses):
         views = [[p for (p,) in v.perceptions_of(scene, f"fit-{seed}-{h}-{k}")] for k in range(looks)]
         vocab = sorted({p.name for ps in views for p in ps})
@@ -100,6 +102,7 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
             # type would be matched by its label): the margin is calibrated for the encoder's room scores,
             # as the check uses them, to choose among the rooms holding instances of one category
             sc = v.room_scores(t, view.room_names)
+            gate_rows += [(max(sc.values()) - x,) for r, x in sc.items() if rooms[r].type == t]
             for c in cats:
                 among = {o.room for o in scene.objects if o.category == c and o.room in sc}
                 if len(among) < 2 or not any(rooms[r].type == t for r in among):
@@ -107,24 +110,26 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
                 top = max(sc[r] for r in among)
                 room_rows += [(top - sc[r], rooms[r].type == t) for r in sorted(among)]
     return (np.array(head_rows, np.float64).reshape(-1, 5), np.array(kind_rows, np.float64).reshape(-1, 2),
-            np.array(room_rows, np.float64).reshape(-1, 2))
+            np.array(room_rows, np.float64).reshape(-1, 2), np.array(gate_rows, np.float64).reshape(-1))
 
 
 def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> dict:
     """Fits tau_head / head_margin, tau_kind and room_margin on seen-split houses; returns the fitted.json entry."""
-    H, Kd, R = training_rows(cfg, embedder, scenes, seed, looks)
+    H, Kd, R, G = training_rows(cfg, embedder, scenes, seed, looks)
     exact, label, known = H[:, 2] > 0, H[:, 3] > 0, H[:, 4] > 0
     name_acc = {(t, m): balanced_accuracy(exact | (~known & (H[:, 0] >= t) & (H[:, 1] <= m)), label)
                 for t, m in itertools.product(GRID_TAU, GRID_MARGIN)}
     (tau_head, head_margin), acc_name = plateau_centre(name_acc)
     (tau_kind,), acc_kind = plateau_centre({(t,): balanced_accuracy(Kd[:, 0] >= t, Kd[:, 1] > 0) for t in GRID_TAU})
     (room_margin,), acc_room = plateau_centre({(m,): balanced_accuracy(R[:, 0] <= m, R[:, 1] > 0) for m in GRID_MARGIN})
+    # the gate: the smallest margin to the house-wide best room that keeps 95% of the true rooms
+    room_gate = next((m for m in GRID_MARGIN if (G <= m).mean() >= GATE_RECALL), GRID_MARGIN[-1])
     params = VerifierParams(tau_head=float(tau_head), head_margin=float(head_margin), tau_kind=float(tau_kind),
-                            room_margin=float(room_margin))
+                            room_margin=float(room_margin), room_gate=float(room_gate))
     return {
         "params": dataclasses.asdict(params),
         "balanced_accuracy": {"name": round(acc_name, 4), "attribute": round(acc_kind, 4), "room": round(acc_room, 4)},
-        "samples": {"name": len(H), "attribute": len(Kd), "room": len(R)},
+        "samples": {"name": len(H), "attribute": len(Kd), "room": len(R), "room_gate": len(G)},
         "fitted_on": {"split": "seen", "world_seed": seed, "scenes": scenes, "looks": looks,
                       "embedder": cfg.memory.embedder},
     }

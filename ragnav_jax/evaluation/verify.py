@@ -19,8 +19,9 @@ against that:
 - room: the rooms the forest's summariser labels with exactly the room phrase; for a room name no
   prototype knows, a choice among the rooms the phrase could tell apart (the object's own and those of
   the recorded objects that pass every other check): the object's room must fit the phrase through the
-  encoder within `room_margin` of the best of them (`room_scores`). "The lamp in the workshop" asks
-  which lamp's room is the workshop, which is easier than which room of the house is;
+  encoder within `room_margin` of the best of them (`room_scores`), and within the looser `room_gate`
+  of the best room of the house. "The lamp in the workshop" asks which lamp's room is the workshop,
+  which is easier than which room of the house is; the gate keeps a lone lamp in the hall out;
 - structured checks: coordinate hints, sensor thresholds and superlatives (ranked among the recorded
   instances that pass the same checks), relations by position against recorded anchors that pass the
   name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
@@ -69,6 +70,7 @@ class VerifierParams:
     head_margin: float = 0.1
     tau_kind: float = 0.5
     room_margin: float = 0.05
+    room_gate: float = 0.1  # an unknown room name's room also fits within this of the house-wide best
 
 
 def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierParams:
@@ -214,16 +216,17 @@ class Verifier:
     def rooms_match(self, room: str, view: SceneView, among: set[str] | None = None) -> set[str]:
         """Room ids the room phrase may mean: the rooms the forest's summariser labels with exactly that type
         when there are any (a house may have two bedrooms); otherwise, of the rooms `among` (default: all),
-        those whose recorded names fit it within room_margin of the best of them (`room_scores`), so room
-        names no prototype knows work. Rooms with no recorded names are unknown and pass."""
+        those whose recorded names fit it within room_margin of the best of them and within room_gate of the
+        best of all (`room_scores`), so room names no prototype knows work. Rooms with no recorded names are
+        unknown and pass."""
         out = {r for r, ns in view.room_names.items() if not ns}
         labelled = {r for r, t in view.room_type.items() if t == room}
         if labelled:
             return out | labelled
-        names = {r: ns for r, ns in view.room_names.items() if among is None or r in among}
-        sc = self.room_scores(room, names)
-        top = max(sc.values(), default=0.0)
-        return out | {r for r, x in sc.items() if x >= top - self.p.room_margin}
+        sc = self.room_scores(room, view.room_names)
+        gate = max(sc.values(), default=0.0) - self.p.room_gate
+        top = max((x for r, x in sc.items() if among is None or r in among), default=0.0)
+        return out | {r for r, x in sc.items() if (among is None or r in among) and x >= max(top - self.p.room_margin, gate)}
 
     # -- the verdict table
     def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:

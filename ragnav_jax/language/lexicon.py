@@ -120,6 +120,21 @@ RELATION_PHRASES: dict[str, str] = {
     "close by": "near",
     "nearby": "near",
     "in the vicinity of": "near",
+    "a few steps from": "near",
+    "a few steps away from": "near",
+    "a stone's throw from": "near",
+    "a short walk from": "near",
+    "within reach of": "near",
+    "side by side with": "next_to",
+    "at the side of": "beside",
+    "by the side of": "beside",
+    "to the side of": "beside",
+    "down by": "by",
+    "up on": "on",
+    "up above": "above",
+    "out in front of": "in_front_of",
+    "straight across from": "opposite",
+    "right across from": "opposite",
     "in the neighbourhood of": "near",
     "in the neighborhood of": "near",
     "not far from": "near",
@@ -175,7 +190,7 @@ for _v in ("share", "shares", "sharing", "shared"):
 RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "
     "resting found right just directly immediately somewhere mounted hanging kept rests hangs perched parked "
-    "stored stationed installed sat propped tucked pushed sited".split()
+    "stored stationed installed sat propped tucked pushed sited lives live".split()
 )
 
 # Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".
@@ -276,7 +291,8 @@ COMPARATOR_PHRASES: dict[str, str] = {
     "near": "approx", "exactly": "approx", "=": "approx", "equal to": "approx", "of about": "approx",
     "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
     "in the neighbourhood of": "approx", "in the neighborhood of": "approx", "in the vicinity of": "approx",
-    "short of": "lt", "shy of": "lt", "topping": "gt", "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
+    "short of": "lt", "shy of": "lt", "topping": "gt", "north of": "gt", "past": "gt", "south of": "lt",
+    "in the ballpark of": "approx", "more or less": "approx", "roughly around": "approx", "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
 }
 _NEGATABLE = {
     "gt": ("above", "over", "greater than", "more than", "higher than", "bigger than", "larger than", "exceeding",
@@ -309,7 +325,9 @@ for _code, _phrases in _NEGATABLE.items():
 COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or greater": "ge", "or over": "ge",
                       "or less": "le", "or lower": "le", "or below": "le", "or under": "le", "and up": "ge",
                       "and above": "ge", "and below": "le",
-                      "or thereabouts": "approx", "or so": "approx"}
+                      "or thereabouts": "approx", "or so": "approx", "give or take": "approx", "and under": "le",
+                      "at the very least": "ge", "at the least": "ge", "at the most": "le", "at the very most": "le",
+                      "or more or less": "approx"}
 
 NUMBER_WORDS = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
@@ -353,6 +371,9 @@ LEAD_PHRASES = (
     "if you could", "if you would", "would you be able to", "are you able to", "do me a favour and",
     "do me a favor and", "i'd ask you to", "i ask you to", "you'll need to", "you will need to", "you are to",
     "you're to", "you ought to", "we'll", "we will", "let us", "it's time to", "time to", "i'd like for you to",
+    "any chance you could", "any chance you can", "is there any chance you could", "is it possible for you to",
+    "would it be possible for you to", "i was wondering if you could", "i was wondering if you'd",
+    "do you think you could", "could you possibly", "can you please", "could you please", "would you please",
     # sequencing openers and closers: "to kick things off", "once you're done there", "wrap up with"
     "to kick things off", "to kick off", "kick things off at", "kick things off with", "kick off at",
     "kick off with", "first things first", "first up", "first off", "next up", "last but not least",
@@ -366,6 +387,8 @@ LEAD_PHRASES = (
     "once done", "once finished", "once that's done", "once that is done", "when that's done",
     "when that is done", "after that's done", "after that is done", "after you've done that",
     "after you have done that", "having done that", "with that done", "that done", "after you're done there",
+    "follow that with", "follow this with", "follow up with", "follow it with", "go on to", "then go on to",
+    "at the very end", "at the end", "and at the very end", "after which", "next stop", "final stop",
     "after you are done there",
     *(f"{d}{o} {n}{v}" for d in ("your ", "the ", "our ", "") for o in ORDINAL_WORDS
       for n in ("stop ", "destination ", "target ", "goal ", "waypoint ", "port of call ", "one ", "")
@@ -382,7 +405,8 @@ LEAD_PHRASES = (
 # Leads after which a verb's -ing form follows ("begin by <verb>ing", "would you mind <verb>ing").
 ING_LEADS = frozenset({"by", "mind"})
 VERBS = (
-    "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
+    "find your way to", "finding your way to", "find your way over to", "go round to", "going round to",
+    "pull up at", "pulling up at", "pull up by", "head across to", "heading across to", "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
     "navigate", "navigating", "proceed", "return", "come", "get", "getting", "make your way", "take me",
     "take us", "bring me", "guide me", "lead me", "show me", "visit", "visiting", "find", "finding", "locate",
     "locating", "search for", "searching for", "look for", "looking for", "seek", "check", "checking",
@@ -400,6 +424,8 @@ VERB_PARTICLES = ("over", "up", "down", "back", "across", "out", "straight", "di
                   "along", "round", "past", "yourself", "itself", "around", "away")
 VERB_PREPOSITIONS = ("to", "towards", "toward", "into", "for", "at", "by", "onto", "past")
 TRAILING_FILLERS = (
+    *ORDINAL_WORDS, "to begin with", "to start with", "to start", "to begin", "to finish", "to end with",
+    "at the very end", "when you get a moment", "when you get a chance", "when you can", "of the lot",
     "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
     "thank you", "then", "for me", "if you can", "if possible", "nearby", "next", "also", "straight away",
     "right away", "as soon as possible", "asap", "at the end", "at the start", "at the beginning",

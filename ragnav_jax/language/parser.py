@@ -227,6 +227,15 @@ _FREE = re.compile(
     r"|\bany\s+(?:order|sequence)\s+(?:will\s+do|is\s+(?:fine|ok|okay|good)|works)"
     r"|\b(?:you|u)\s+(?:decide|choose|pick)\s+(?:on\s+)?the\s+(?:order|sequence)"
     r"|\b(?:there\s+is|there's)\s+no\s+(?:required|fixed|set|particular|specific|special|preferred)\s+(?:order|sequence)(?:\s+here)?"
+    r"|\b(?:i'm|i\s+am)\s+not\s+(?:fussed|bothered|worried|picky|particular|fussy)\s+(?:about|with)\s+(?:the\s+)?(?:order|sequence)"
+    r"|\b(?:feel\s+free|you're\s+free|you\s+are\s+free)\s+to\s+(?:shuffle|change|rearrange|reorder|swap|pick|choose|decide|set)"
+    r"\s+(?:the|their|your\s+own)\s+(?:order|sequence)"
+    r"|\bno\s+need\s+to\s+(?:stick\s+to|follow|keep\s+to)\s+(?:the|this|my)\s+(?:order|sequence)(?:\s+(?:i've|i\s+have)"
+    r"\s+(?:listed|given|written|put)\s+(?:them|these|it)\s+in)?"
+    r"|\b(?:either|any|each)\s+(?:one\s+)?(?:of\s+them\s+)?(?:can|could|may)\s+(?:come|go|be\s+done)\s+first"
+    r"|\b(?:it\s+)?(?:makes|make)\s+no\s+difference\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
+    r"|\b(?:it\s+)?(?:doesn't|does\s+not)\s+make\s+(?:a|any)\s+difference\s+(?:which|what)\b[^.;:!?⟪]*"
+    r"|\b(?:the\s+)?(?:order|sequence)\s+(?:is|'s)\s+(?:flexible|not\s+important|unimportant|up\s+to\s+you)"
     r"|\b(?:it\s+)?(?:does\s+not|doesn't|won't|will\s+not)\s+matter\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
 )
 # Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
@@ -330,13 +339,22 @@ def _number_words(s: str) -> str:
 # Canonical forms: surface variants of English that carry no meaning of their own for the task chain are
 # rewritten before anything is read. Each rule is a general construction, not a template's wording.
 
+def _digits(words: str) -> str:
+    """'five point two' -> '5.2' (unchanged when the words are no number)."""
+    v = words_to_number(words)
+    return words if v is None else f"{v:g}"
+
+
 _ORD_ALT = "|".join(L.ORDINAL_WORDS)
+# (reading, sign) -> a superlative that says it ("warmest"): "hotter than any other" is the hottest.
+_SUPER_OF_SIGN = {v: k for k, v in reversed(list(L.SUPERLATIVES.items()))}
 _PRON_OBJ = r"(?:that\s+one|this\s+one|that\s+spot|that\s+place|it|there|them|that|this)"
 _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for rx, rep in (
     # List markers: "1) the kiln 2) the loom", "stop 2: the loom", "(a) the kiln", bullets; the numbers are
     # positions in a list, not values.
     (r"(?:(?<=^)|(?<=[\s:;]))(?:(?:\(?\d{1,2}\)|\(?[a-h]\)|\d{1,2}\.|#\d{1,2}:?)(?=\s*(?:the|a|an|my|your|our)\b)|[•·*▪►‣]"
-     r"|(?:stop|step|goal|stage|leg|destination|item|target|waypoint|no\.?|number)\s+(?:#\s*)?\d{1,2}\s*[:.)-])\s*",
+     r"|(?:stop|step|goal|stage|leg|destination|item|target|waypoint|no\.?|number)\s+(?:#\s*)?(?:\d{1,2}|one|two|three|four"
+     r"|five|six|seven|eight|nine|ten)\s*[:.)-]|(?:1st|2nd|3rd|[4-9]th)\s*[:.)-])\s*",
      "; "),
     (rf"(?:(?<=^)|(?<=[\s;.]))(?:the\s+)?(?:{_ORD_ALT})\s+(?:stop|destination|goal|target|leg|waypoint|port\s+of\s+call)"
      r"\s*:", "; "),
@@ -346,12 +364,67 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\b(?:take|have|give|get|taking|having|giving|getting|grab)\s+(?:a|an)\s+(?:(?:quick|brief|little|close|closer|good"
      r"|proper)\s+)?(?:look|peek|glance|peep|gander|squint|glimpse)\s+(?:at|in|inside|into|over)\b"
      r"|\b(?:make|making|pay|paying|do|doing)\s+(?:a|an)\s+(?:(?:quick|brief|little|short)\s+)?(?:stop|trip|detour|visit"
-     r"|stopover|run|dash)\s+(?:at|to|by|in|over\s+to)\b", "visit"),  # "next up, ...", "first off, ..."
+     r"|stopover|run|dash)\s+(?:at|to|by|in|over\s+to)\b"
+     r"|\b(?:make|making)\s+(?:a\s+)?(?:bee-?line|b-line)\s+(?:for|to|towards)\b", "visit"),  # "next up, ...", "first off, ..."
+    # "(x, y) = (3, 4)", "x/y = 3/4", "{x: 3, y: 4}", "3 (x) and 4 (y)", "whose coordinates are (3, 4)".
+    (r"\(\s*x\s*,\s*y\s*\)\s*(?:=|:)\s*(?=[(\[])", " "),
+    (rf"(?P<pre>\b[xy]\s*(?:(?:value\s+)?of\s+|=\s*|:\s*|is\s+|\s))(?P<nw>{_NW_SEQ})\b(?![-\w])",
+     lambda m: m.group("pre") + _digits(m.group("nw"))),
+    (rf"\b(?:with|having)\s+an?\s+x\s+(?:value\s+)?of\s+(?P<x>{NUM})\s*,?\s*(?:and\s+)?an?\s+y\s+(?:value\s+)?of\s+"
+     rf"(?P<y>{NUM})", r"at (\g<x>, \g<y>)"),
+    (rf"\bx\s*/\s*y\s*(?:=|:)\s*(?P<x>{NUM})\s*/\s*(?P<y>{NUM})", r"(\g<x>, \g<y>)"),
+    (r"\{(?P<in>[^{}]*\d[^{}]*)\}", r"(\g<in>)"),
+    (rf"(?P<x>{NUM})\s*\(\s*x\s*\)\s*(?:,\s*and|,|and)?\s*(?P<y>{NUM})\s*\(\s*y\s*\)", r"(\g<x>, \g<y>)"),
+    (r"\b(?:whose|with\s+(?:the|its))\s+(?:map\s+|grid\s+)?(?:coordinates|coords|position|location)\s+(?:are|is)\s+", " at "),
     # Arrows and similar marks of a sequence: "the kiln -> the loom".
     (r"\s*(?:→|⟶|➔|➜|➝|=>|->|»|>>)\s*", " then "),
     # "the kiln currently switched on": a time adverb before a state after a noun is its copula.
     (rf"(?<![\w'])(?P<cop>(?:is|are|'s|stays?|remains?|be)\s+)?(?:currently|presently|right\s+now|at\s+the\s+moment"
      rf"|now)\s+(?={_alt(L.STATE_PHRASES)})", lambda m: m.group("cop") or "that is "),
+    # Order said outright: "order matters here:", "exactly as listed"; "X, but not until you've been to Y".
+    (r"\b(?:the\s+)?order\s+(?:matters|is\s+important|counts)(?:\s+(?:here|for\s+this))?\b", " "),
+    (r"\b(?:exactly\s+|just\s+)?as\s+(?:listed|given|written)\b|\bkeeping\s+to\s+(?:this|that|the\s+given)\s+order\b", " "),
+    (r"\bbut\s+not\s+(?:until|before)\s+(?:you've|you\s+have|you're|you\s+are)\s+(?:been\s+to|visited|seen|checked|reached"
+     r"|done|finished\s+with|stopped\s+at|gone\s+to)\b", "but first"),
+    (r"\b(?:and\s+)?only\s+(?:then|after\s+that|afterwards)\b", " then "),
+    (r"^mind\s+(?=[a-z]+ing\b)", "would you mind "),  # "mind scooting over to ...?"
+    # Where things are kept: "the kettle that we keep in the kitchen", "that you'll find in", "which lives in".
+    (r"\b(?:that|which)\s+(?:we've\s+got|we\s+have|we\s+keep|we've|you'll\s+find|you\s+will\s+find|you\s+can\s+find"
+     r"|i\s+keep|i\s+have|i've\s+got|you'll\s+see|you\s+can\s+see)\s+(?=in|inside|on|by|near|next|over|up|down|at)\b",
+     "that is "),
+    (r"\b(?:that\s+|which\s+)?you\s+(?:can|could|will|'ll|might)\s+(?:find|see|spot)(?=\s+(?:in|inside|on|at|there|here"
+     r"|anywhere|around|over|upstairs|downstairs)\b|\s*[,.;!?]|\s*$)", " "),
+    # Rooms of other objects: "in the room where you'll find X", "in whichever room X is in", "in the room X is in".
+    (r"\bin\s+the\s+(?:same\s+)?room\s+where\s+(?:you'll|you\s+will|you\s+can|we|you)\s+(?:find|see|keep|have)\b",
+     "in the room containing"),
+    (r"\bin\s+(?:whichever|the|what(?:ever)?)\s+room\s+(?:that\s+)?(?P<np>(?:the|a|an)\s+[^,;.()⟪]+?)\s+(?:is|are|sits|sit"
+     r"|lives|live|stands|stand)\s+in\b", r"in the room containing \g<np>"),
+    # "X that the Y is on or near", "X that either supports or stands near the Y": Y is on X or beside it.
+    (r"\b(?:that|which)\s+(?P<np>(?:the|a|an)\s+[^,;.()⟪]+?)\s+(?:is|are|sits|sit|rests|rest|stands|stand)\s+on\s+or\s+"
+     r"(?:(?:stands?|sits?|is|are)\s+)?(?:near|close\s+to|next\s+to|beside|by)\b", r"with \g<np>"),
+    (r"\b(?P<w>that|which|and)\s+(?:either\s+)?(?:supports?|holds?|has|have|carries|carry)\s+or\s+(?:stands?|sits?|is|are)\s+"
+     r"(?:near|next\s+to|beside|by|close\s+to)\b", lambda m: "and has" if m.group("w") == "and" else "with"),
+    (r"\bgo\s+ahead\s+and\b", " "),
+    # "to the sofa's left": to the left of the sofa.
+    (r"\bto\s+(?P<np>(?:the|a|an)\s+[^,;.()⟪']+?)'s\s+(?P<side>left|right)(?:-hand\s+side|\s+side)?\b",
+     r"to the \g<side> of \g<np>"),
+    # Readings and thresholds in other words: "temp", "RH", "NDVI index", "below the 0.3 mark", "18 degrees below zero".
+    (r"\bvegetation\s+index\s*\(\s*ndvi\s*\)|\bndvi\s+(?:index|value|reading|score)\s*(?=\(|[<>≤≥~≈=])|\bndvi\s+index\b", "ndvi"),
+    (r"\btemp\b\.?", "temperature"),
+    (r"\brh\b", "humidity"),
+    (r"\bdeg\s*c\b", "°c"),
+    (rf"\bthe\s+(?P<n>{NUM}|{_NW_SEQ})(?:\s*-?\s*(?P<u>%|°\s*c|c|degrees?|degree|percent|per\s+cent))?\s+mark\b",
+     lambda m: m.group("n") + (" " + ("degrees" if m.group("u") and m.group("u").startswith("degree") else m.group("u"))
+                               if m.group("u") else "")),
+    (rf"(?P<n>{NUM})\s*(?P<u>degrees?(?:\s+(?:celsius|c))?|°\s*c?)\s+below\s+(?:zero|freezing)", r"-\g<n> \g<u>"),
+    (r"\b(?P<n>\d+|[a-z]+(?:-[a-z]+)?)-ish\b", r"about \g<n>"),
+    # "whichever heater in the garage is warmest": the warmest heater in the garage.
+    (rf"\bwhichever\s+(?P<np>[^,;.()⟪]+?)\s+(?:is|are)\s+(?:the\s+)?(?P<sup>{_alt(L.SUPERLATIVES)})\b",
+     r"the \g<sup> \g<np>"),
+    # "colder than any other one in there", "warmer than all the others": a superlative.
+    (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+(?:any|every|all|each)\s+(?:of\s+)?(?:the\s+)?(?:other|others)"
+     r"(?:\s+ones?)?(?:\s+(?:in\s+there|there|here|in\s+here))?",
+     lambda m: _SUPER_OF_SIGN[L.COMPARATIVES[re.sub(r"\s+", " ", m.group("cmp"))]]),
     # Time adverbs say when a state holds, and it holds now: "which is open at the moment".
     (r"\b(?:at\s+the\s+moment|at\s+present|right\s+now|just\s+now|as\s+of\s+now|for\s+now|at\s+this\s+time"
      r"|currently|presently)\b", " "),
@@ -603,7 +676,10 @@ class _Node:
             # The phrase is the noun phrase with its descriptive words in front and without its states: "red
             # sofa" for "the sofa which is red", "lamp" for "the lamp that is on" (as the generator writes it).
             pre = [a for a in self.states if a not in _STATE_ATTRS and a not in attrs]
-            base = Target(" ".join(pre + self.words), head, attrs + tuple(a for a in self.states if a not in attrs))
+            n = len(head.split())  # states before the noun leave the phrase too: "the open bureau" -> "bureau"
+            words = [w for w in self.words[: len(self.words) - n] if w.replace("-", " ") not in L.STATE_PHRASES]
+            base = Target(" ".join(pre + words + self.words[len(self.words) - n :]), head,
+                          attrs + tuple(a for a in self.states if a not in attrs))
             if len(base.phrase) > 200 or len(head) > 100 or any(len(a) > 60 for a in base.attributes):
                 raise ParseError(f"could not read '{base.phrase[:80]}...' as one object: name it in fewer words")
         # A pronoun anchor refers to the previous goal; inside a nested phrase ("the desk, which has a lamp
@@ -961,6 +1037,20 @@ def _continues(tokens: list[str]) -> bool:
                                     or nxt in L.RELATIVE_LEADERS or nxt in _MODALS or _relation_at(tokens, 1) is not None)
 
 
+def _possessive_room(tokens: list[str], piece: _Piece) -> list[str]:
+    """'the pantry's kettle', 'the games room's warmest lamp': a room in the possessive names the goal's room."""
+    if not tokens or tokens[0] not in L.DETERMINERS:
+        return tokens
+    for k in range(1, min(4, len(tokens) - 1)):
+        if tokens[k].endswith("'s"):
+            words = [*tokens[1:k], tokens[k][:-2]]
+            if L.is_room_phrase(words):
+                piece.room = piece.room or _room_name(words)
+                return [tokens[0], *tokens[k + 1 :]]
+            return tokens
+    return tokens
+
+
 def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
     """A subordinate clause that names nothing: "once you're done there", "when you've finished", "after we
     get there" (a subordinator or a subject pronoun first, no determiner, no cut-out phrase)."""
@@ -984,6 +1074,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     if _sequencing_clause(tokens, raw):
         return piece  # "when you've finished there,": says only that what follows comes next
     tokens, piece.led = _strip_leaders(tokens)
+    tokens = _possessive_room(tokens, piece)
     tokens = _join_prenominal_states(tokens)
     piece.det = bool(tokens) and tokens[0] in L.DETERMINERS
     # ", which should be hotter than 100 degrees", ", which is on,": constraints of the previous goal; so is a
