@@ -20,9 +20,9 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 from flax import struct
-from mujoco import mjx
 
 from ragnav_jax.config import Config
+from ragnav_jax.sim import mjx  # imported without MJX's Warp notice
 from ragnav_jax.sim.controller import Path, follow, physics
 from ragnav_jax.sim.model import SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts
 from ragnav_jax.sim.sensors import camera_visibility
