@@ -168,3 +168,26 @@ class _Poison(dict):
         raise AssertionError(f"fitting read {self.name}")
 
     __getitem__ = __iter__ = __contains__ = get = items = keys = values = __len__ = _raise
+
+
+def test_nested_relations_pick_the_anchor(minilm, apartment):
+    """'The workbench with the toolbox near the tool chest': of two workbenches each with a toolbox, only
+    the one whose toolbox is near the tool chest passes (the anchor's own relation is checked too)."""
+    from ragnav_jax.world.scene import SceneObject
+
+    v, _ = minilm
+    room = apartment.objects[0].room
+    x, y = apartment.objects[0].position[:2]
+    objs = (SceneObject("workbench_1", "workbench", (x, y, 0.45), room=room),
+            SceneObject("toolbox_1", "toolbox", (x + 0.6, y, 0.1), room=room),
+            SceneObject("tool_chest_1", "tool chest", (x + 1.2, y, 0.3), room=room),
+            SceneObject("workbench_2", "workbench", (x, y + 4.0, 0.45), room=room),
+            SceneObject("toolbox_2", "toolbox", (x + 0.6, y + 4.0, 0.1), room=room))
+    scene = dataclasses.replace(apartment, objects=objs)
+    names = {i: [o.category] for i, o in enumerate(objs)}
+    view = v.scene_view(scene, list(range(len(objs))), names)
+    ps = v.perceptions_of(scene, "nested")
+    sg = parse_instruction("Go to the workbench with the toolbox near the tool chest.").subgoals[0]
+    assert [objs[i].id for i in np.flatnonzero(v.verdicts(view, sg, ps))] == ["workbench_1"]
+    sg = parse_instruction("Go to the workbench with the toolbox.").subgoals[0]
+    assert [objs[i].id for i in np.flatnonzero(v.verdicts(view, sg, ps))] == ["workbench_1", "workbench_2"]

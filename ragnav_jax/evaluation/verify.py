@@ -256,12 +256,7 @@ class Verifier:
         O = len(objs)
         ok = self.target_fits(sg.target, ps, view.vocab, [view.aliases.get(i, ()) for i in range(O)])
         pool = [i for i in view.known]
-        for r in sg.target.relations:  # anchors the memory recorded; an unrecorded one leaves it unchecked
-            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.aliases.get(i, ()) for i in pool])
-            anchors = [objs[i] for i, f in zip(pool, fit) if f]
-            if anchors:
-                holds = np.array([any(relation_holds(r.type, o, a, self.near) for a in anchors) for o in objs])
-                ok &= holds
+        ok &= self.relations_hold(sg.target, view, ps)
         if sg.location is not None:
             ok &= np.array([math.dist(o.position[:2], (sg.location.x, sg.location.y)) <= self.radius for o in objs])
         for c in sg.sensors:
@@ -283,6 +278,23 @@ class Verifier:
                     v = objs[i].readings[c.reading]
                     keep[i] = v == (max(vals) if c.comparator == "max" else min(vals)) if vals else True
                 ok &= keep
+        return ok
+
+    def relations_hold(self, t: Target, view: SceneView, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
+        """(O,) bool: t's relations hold for each scene object against anchors the memory recorded that fit
+        the anchor's name, attributes and, in turn, its own relations ("the workbench with the toolbox near
+        the tool chest"). An anchor the memory never recorded leaves its relation unchecked; nested
+        relations that no recorded anchor meets are left unchecked likewise."""
+        objs, pool = view.scene.objects, list(view.known)
+        ok = np.ones(len(objs), bool)
+        for r in t.relations:
+            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.aliases.get(i, ()) for i in pool])
+            named = [i for i, f in zip(pool, fit) if f]
+            if r.anchor.relations and named:
+                nested = self.relations_hold(r.anchor, view, ps)
+                named = [i for i in named if nested[i]] or named
+            if named:
+                ok &= np.array([any(relation_holds(r.type, o, objs[i], self.near) for i in named) for o in objs])
         return ok
 
     def contradicts(self, sg: Subgoal, names: Sequence[str], texts: Sequence[str], vocab: Sequence[str],
