@@ -20,7 +20,7 @@ import yaml
 from ragnav_jax.errors import ConfigError
 
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
-EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen")
+EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen", "unseen2")
 
 ROOM_TYPES = (
     "kitchen",
@@ -123,6 +123,7 @@ class EpisodesConfig:
     split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev, unseen_dev2
     # (language/phrasings.py, phrasings_dev2.py: parser rounds were developed against them) | unseen
     # (phrasings_heldout.py, written by someone who never read the parser, after its last round);
+    # | unseen2 (phrasings_heldout2.py: a second held-out author, everyday typed requests, parser never read);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):

@@ -795,6 +795,11 @@ def _renderer(split: str, what: str):
 
         return {"goal": D.render_goal_dev2, "sensor": D.render_sensor_dev2, "hint": D.hint_text_dev2,
                 "instruction": D.render_instruction_dev2}[what]
+    if split == "unseen2":  # a second held-out set: another author, everyday typed requests, parser never read
+        from ragnav_jax.language import phrasings_heldout2 as H2
+
+        return {"goal": H2.render_goal_heldout2, "sensor": H2.render_sensor_heldout2, "hint": H2.hint_text_heldout2,
+                "instruction": H2.render_instruction_heldout2}[what]
     from ragnav_jax.language import phrasings_heldout as H  # held out: written without reading the parser
 
     return {"goal": H.render_goal_heldout, "sensor": H.render_sensor_heldout, "hint": H.hint_text_heldout,

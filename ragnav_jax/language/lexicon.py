@@ -75,7 +75,10 @@ ROOM_WORDS = frozenset(
     "kitchen bedroom bathroom study office hallway hall gym greenhouse garage lounge pantry nursery den attic "
     "basement cellar corridor foyer entrance entryway lobby closet porch conservatory library workshop studio "
     "playroom washroom lavatory loo laundry utility kitchenette bedchamber vestibule landing mudroom sunroom "
-    "storeroom boxroom".split()
+    "storeroom boxroom loft hayloft barn stable stables shed veranda verandah patio terrace balcony scullery parlour "
+    "parlor reception ward surgery dispensary pharmacy infirmary atrium gallery annex annexe cloakroom larder sauna "
+    "darkroom dormitory dorm classroom staffroom boardroom showroom workroom stockroom schoolroom sickbay chapel "
+    "bunkroom bedsit kennel garret".split()
 )
 ROOM_SUFFIXES = ("room", "area", "zone", "wing", "space")
 
