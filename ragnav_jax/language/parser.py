@@ -360,6 +360,11 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"\s*:", "; "),
     (r"\b(?P<w>next|first)\s+(?:up|off)\b", r"\g<w>"),
     (r"\b(?:both|each\s+of|all\s+of)\s+(?=the\b)", ""),  # "visit both the kiln and the loom"
+    # "the nearest lamp to the sofa" is the lamp nearest to the sofa; "the nearest lamp" (to the robot) names
+    # a lamp: which one is left to retrieval and planning (the chain has no distance-to-robot constraint).
+    (r"\bthe\s+(?:nearest|closest)\s+(?P<np>[a-z][\w'-]*(?:\s+[a-z][\w'-]*){0,2}?)\s+to\s+(?=(?:the|a|an|my|your)\b)",
+     r"the \g<np> nearest to "),
+    (r"\bthe\s+(?:nearest|closest)\s+(?!to\b|one\b|of\b)(?=[a-z])", "the "),
     # Light verbs: "take a (quick) look at", "have a peek inside", "make a detour to", "pay a visit to".
     (r"\b(?:take|have|give|get|taking|having|giving|getting|grab)\s+(?:a|an)\s+(?:(?:quick|brief|little|close|closer|good"
      r"|proper)\s+)?(?:look|peek|glance|peep|gander|squint|glimpse)\s+(?:at|in|inside|into|over)\b"
