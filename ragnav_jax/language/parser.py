@@ -235,7 +235,15 @@ _FREE = re.compile(
     r"|\b(?:either|any|each)\s+(?:one\s+)?(?:of\s+them\s+)?(?:can|could|may)\s+(?:come|go|be\s+done)\s+first"
     r"|\b(?:it\s+)?(?:makes|make)\s+no\s+difference\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
     r"|\b(?:it\s+)?(?:doesn't|does\s+not)\s+make\s+(?:a|any)\s+difference\s+(?:which|what)\b[^.;:!?⟪]*"
-    r"|\b(?:the\s+)?(?:order|sequence)\s+(?:is|'s)\s+(?:flexible|not\s+important|unimportant|up\s+to\s+you)"
+    r"|\b(?:the\s+)?(?:order|sequence)(?:\s+is|'s)\s+(?:entirely\s+|totally\s+|completely\s+)?(?:flexible|not\s+important"
+    r"|unimportant|up\s+to\s+you|your\s+(?:call|choice))"
+    # "- any order", "(any order)", "whatever order works for you", "no particular order", "doesn't matter what order"
+    r"|\b(?:in\s+)?(?:any|whatever|whichever|no\s+(?:particular|specific|special|set|fixed|required))\s+(?:order|sequence)"
+    r"(?:\s+(?:works|is\s+(?:fine|ok|okay|good|easiest)|you\s+(?:like|want|prefer|choose|fancy)|(?:works\s+)?(?:best\s+)?for\s+you"
+    r"|will\s+do|you\s+go\s+in|please))*"
+    r"|\b(?:it\s+)?(?:doesn't|does\s+not|don't|do\s+not)\s+matter\s+(?:what|which|in\s+what|in\s+which)\s+(?:order|sequence)"
+    r"(?:\s+you\s+(?:go\s+in|do\s+(?:them|it)(?:\s+in)?|take))?"
+    r"|\b(?:i\s+)?(?:don't|do\s+not)\s+(?:mind|care)\s+(?:which|what|about\s+the)\s+(?:order|sequence)"
     r"|\b(?:it\s+)?(?:does\s+not|doesn't|won't|will\s+not)\s+matter\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
 )
 # Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
@@ -349,7 +357,28 @@ _ORD_ALT = "|".join(L.ORDINAL_WORDS)
 # (reading, sign) -> a superlative that says it ("warmest"): "hotter than any other" is the hottest.
 _SUPER_OF_SIGN = {v: k for k, v in reversed(list(L.SUPERLATIVES.items()))}
 _PRON_OBJ = r"(?:that\s+one|this\s+one|that\s+spot|that\s+place|it|there|them|that|this)"
+def _list_marker(m: re.Match) -> str:
+    """'1) ', '(2) ': a list position unless it closes a bracket opened before it ('(3, 4) then')."""
+    before = m.string[: m.start()]
+    return m.group(0) if before.count("(") > before.count(")") else "; "
+
+
 _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for rx, rep in (
+    # Greetings and closing courtesies: "hi,", "ok so", "quick one:", ", thanks", "cheers", "pls".
+    (r"^(?:(?:hi|hey|hello|ok|okay|right|so|alright|well|um+|uh+|er+|quick\s+one|robot)(?:\s+(?:there|robot|buddy|so|then)"
+     r")?\s*[,:!.]?\s+)+", ""),
+    (r"(?:[,;-]\s*|\s+)\b(?:thanks|thank\s+you|thx|ta|cheers|pls|plz|please)(?:\s+(?:a\s+lot|so\s+much|very\s+much|again"
+     r"|robot|buddy))?\s*(?=[.!?]|$)", ""),
+    (r"\b(?:um+|uh+|er+|erm+)\b,?", " "),
+    (r"(?:(?<=^)|(?<=[\s:;,]))\(?\d{1,2}\)(?=\s*[a-z])", _list_marker),
+    (r"(?:(?<=^)|(?<=[:;])|(?<=[:;]\s))\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ...; 2. find ..."
+    (r"\bdo\s+(?:them|these|those|it\s+all|all\s+of\s+them)(?=\s+(?:in|any|whatever|whichever)\b|\s*[.,;!?]|\s*$)", " "),
+    # "has on or near it the lamp": with the lamp; "... has the lamp on or near it": the pronoun adds nothing.
+    (r"\b(?:has|have)\s+on\s+or\s+(?:near|next\s+to|beside|by|close\s+to)\s+(?:it|them)\s+", "with "),
+    (r"\s+on\s+or\s+(?:near|next\s+to|beside|by|close\s+to)\s+(?:it|them)\b", " "),
+    # "whichever shelves stand near the sofa": the verb of a nested anchor's clause.
+    (r"\b(?P<w>whichever\s+(?:[a-z'-]+\s+){0,3}?)(?:stands?|sits?|lies?|rests?)\s+(?=(?:right\s+|just\s+|directly\s+)?"
+     r"(?:next|near|close|by|beside|on|under|in|inside|not|behind|opposite|across|facing|to|above|below)\b)", r"\g<w>is "),
     # List markers: "1) the kiln 2) the loom", "stop 2: the loom", "(a) the kiln", bullets; the numbers are
     # positions in a list, not values.
     (r"(?:(?<=^)|(?<=[\s:;]))(?:(?:\(?\d{1,2}\)|\(?[a-h]\)|\d{1,2}\.|#\d{1,2}:?)(?=\s*(?:the|a|an|my|your|our)\b)|[•·*▪►‣]"
@@ -371,6 +400,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"|\b(?:make|making|pay|paying|do|doing)\s+(?:a|an)\s+(?:(?:quick|brief|little|short)\s+)?(?:stop|trip|detour|visit"
      r"|stopover|run|dash)\s+(?:at|to|by|in|over\s+to)\b"
      r"|\b(?:make|making)\s+(?:a\s+)?(?:bee-?line|b-line)\s+(?:for|to|towards)\b", "visit"),  # "next up, ...", "first off, ..."
+    (r"\s+on\s+the\s+(?:map|floor\s*plan|plan|grid)\b", " "),  # "at (3, 4) on the map"
     # "(x, y) = (3, 4)", "x/y = 3/4", "{x: 3, y: 4}", "3 (x) and 4 (y)", "whose coordinates are (3, 4)".
     (r"\(\s*x\s*,\s*y\s*\)\s*(?:=|:)\s*(?=[(\[])", " "),
     (rf"(?P<pre>\b[xy]\s*(?:(?:value\s+)?of\s+|=\s*|:\s*|is\s+|\s))(?P<nw>{_NW_SEQ})\b(?![-\w])",
@@ -411,7 +441,8 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"(?:near|next\s+to|beside|by|close\s+to)\b", lambda m: "and has" if m.group("w") == "and" else "with"),
     (r"\bgo\s+ahead\s+and\b", " "),
     # "to the sofa's left": to the left of the sofa.
-    (r"\bto\s+(?P<np>(?:the|a|an)\s+[^,;.()⟪']+?)'s\s+(?P<side>left|right)(?:-hand\s+side|\s+side)?\b",
+    (r"\bto\s+(?P<np>(?:the|a|an)\s+(?:(?!that\b|which\b|who\b|it\b)[^,;.()⟪'\s]+\s+){0,3}?(?!that\b|which\b|who\b|it\b)"
+     r"[^,;.()⟪'\s]+)'s\s+(?P<side>left|right)(?:-hand\s+side|\s+side)?\b",
      r"to the \g<side> of \g<np>"),
     # Readings and thresholds in other words: "temp", "RH", "NDVI index", "below the 0.3 mark", "18 degrees below zero".
     (r"\bvegetation\s+index\s*\(\s*ndvi\s*\)|\bndvi\s+(?:index|value|reading|score)\s*(?=\(|[<>≤≥~≈=])|\bndvi\s+index\b", "ndvi"),
@@ -430,6 +461,9 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+(?:any|every|all|each)\s+(?:of\s+)?(?:the\s+)?(?:other|others)"
      r"(?:\s+ones?)?(?:\s+(?:in\s+there|there|here|in\s+here))?",
      lambda m: _SUPER_OF_SIGN[L.COMPARATIVES[re.sub(r"\s+", " ", m.group("cmp"))]]),
+    (r"\b(?:down|over|up|out|back|round)\s+(?=in\s+the\b|inside\s+the\b)", ""),  # "down in the pantry"
+    (r"\b(?:once|when|after)\s+(?:you're|you\s+are|you've|you\s+have|you)\s+(?:done|finished|through)(?:\s+(?:with\s+"
+     r"(?:that|it|this|that\s+one)|there|here))?\b", " then "),
     # Time adverbs say when a state holds, and it holds now: "which is open at the moment".
     (r"\b(?:at\s+the\s+moment|at\s+present|right\s+now|just\s+now|as\s+of\s+now|for\s+now|at\s+this\s+time"
      r"|currently|presently)\b", " "),
