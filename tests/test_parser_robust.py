@@ -498,8 +498,7 @@ def test_later_round_constructions_agree(path):
     markers, light verbs, headings, participle clauses about the previous goal, axis, slash and brace
     coordinates, superlatives over a plural, possessive rooms, object relatives, rooms of other objects,
     thresholds against a "mark", order said in other words, greetings and courtesies, spoken fillers) on
-    hand-written sentences with nouns no
-    generator writes."""
+    hand-written sentences with nouns no generator writes."""
     rows = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
     assert len(rows) >= 15
     for row in rows:
