@@ -278,7 +278,7 @@ COMPARATIVES: dict[str, tuple[str, int]] = {
 }
 EXTREME_WORDS = {
     "highest": 1, "maximum": 1, "max": 1, "greatest": 1, "largest": 1, "biggest": 1, "top": 1, "peak": 1,
-    "lowest": -1, "minimum": -1, "min": -1, "smallest": -1, "least": -1,
+    "lowest": -1, "minimum": -1, "min": -1, "smallest": -1, "least": -1, "most": 1,
 }
 
 # Comparator phrases -> comparator code.

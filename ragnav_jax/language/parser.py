@@ -110,7 +110,8 @@ NOT_LENGTH = (
 _NW_ALT = "|".join(sorted(list(L.NUMBER_WORDS) + ["hundred", "point"], key=len, reverse=True))
 _NW_SEQ = rf"(?:(?:a\s+)?(?:{_NW_ALT})(?:(?:\s+|-)(?:and\s+)?(?:{_NW_ALT}))*)"
 _NW_AFTER_CMP = re.compile(
-    rf"(?P<pre>{CMP_ALT}\s+|{_alt(L.COMPARATIVES)}\s+than\s+|{READ_ALT}\s+(?:of|is|at)\s+)(?P<nw>\b{_NW_SEQ}\b)"
+    rf"(?P<pre>{CMP_ALT}\s+|{_alt(L.COMPARATIVES)}\s+than\s+|{READ_ALT}\s+(?:(?:of|is|at|reading|value|score)\s+)?)"
+    rf"(?P<nw>\b{_NW_SEQ}\b)"
 )
 _MINUS = re.compile(rf"\b(?:minus|negative)\s+(?=\d|\.\d|(?:{_NW_ALT})\b)")  # "minus five degrees"
 _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|°|percent\b|per\s+cent\b|%))")
@@ -195,7 +196,8 @@ _FREE = re.compile(
     r"\b(?:in|by|following|using)\s+(?:any|whatever|whichever|an?\s+(?:efficient|optimal|sensible|good|smart)|"
     r"the\s+(?:best|most\s+efficient|quickest|fastest|shortest|optimal|cheapest|most\s+convenient|smartest))"
     r"\s+(?:order|sequence)(?:\s+(?:is|you\s+(?:like|want|prefer|choose|wish|think\s+best)|that\s+is|works?|seems?"
-    r"|makes\s+sense)(?:\s+(?:quickest|fastest|shortest|best|most\s+efficient|efficient|optimal|for\s+you|fine"
+    r"|makes\s+sense)(?:\s+(?:quickest|fastest|shortest|best|most\s+efficient|efficient|optimal|for\s+you|fine|easier|easiest"
+    r"|simplest|simpler|better|quicker|more\s+convenient|most\s+convenient|ok|okay|good"
     r"|cheapest|closest|easiest))?)*"
     r"|\b(?:the\s+)?order\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+(?:matter|important)"
     r"|\b(?:in\s+)?no\s+particular\s+order|\bany\s+order\s+(?:is\s+fine|works|will\s+do)"
@@ -219,7 +221,9 @@ _FREE = re.compile(
     r"|\b(?:i\s+)?(?:do\s+not|don't)\s+mind\s+(?:the|which|what)\s+(?:order|sequence)"
     r"|\b(?:in\s+)?no\s+(?:specific|set|fixed|required|special)\s+(?:order|sequence)"
     # "which one comes first doesn't matter", "it does not matter which you visit first"
-    r"|\b(?:which|what)\b[^.;:,!?⟪]{0,40}?\b(?:does\s+not|doesn't|do\s+not|don't|won't|will\s+not)\s+matter\b"
+    r"|\b(?:which|what)\s+(?:one|ones|of\s+(?:them|these)|goes|comes|you\s+(?:visit|do|see|check))\b[^.;:,!?⟪]{0,30}?"
+    r"\b(?:does\s+not|doesn't|do\s+not|don't|won't|will\s+not)\s+matter\b"
+    r"|\b(?:it\s+)?(?:doesn't|does\s+not)\s+matter\s+the\s+(?:order|sequence)\b"
     # "whichever way round you like", "order them however you like", "any order will do", "you decide the order"
     r"|\b(?:in\s+)?(?:whichever|whatever|any)\s+way\s+(?:round|around)(?:\s+you\s+(?:like|want|prefer|choose|wish|fancy))?"
     r"|\b(?:order|sequence|arrange)\s+(?:them|these|those|it|things|the\s+(?:visits|stops))\s+(?:however|as|any\s+way|whichever\s+way"
@@ -239,7 +243,7 @@ _FREE = re.compile(
     r"|unimportant|up\s+to\s+you|your\s+(?:call|choice))"
     # "- any order", "(any order)", "whatever order works for you", "no particular order", "doesn't matter what order"
     r"|\b(?:in\s+)?(?:any|whatever|whichever|no\s+(?:particular|specific|special|set|fixed|required))\s+(?:order|sequence)"
-    r"(?:\s+(?:works|is\s+(?:fine|ok|okay|good|easiest)|you\s+(?:like|want|prefer|choose|fancy)|(?:works\s+)?(?:best\s+)?for\s+you"
+    r"(?:\s+(?:works|is\s+[a-z]+|you\s+(?:like|want|prefer|choose|fancy)|(?:works\s+)?(?:best\s+)?for\s+you"
     r"|will\s+do|you\s+go\s+in|please))*"
     r"|\b(?:it\s+)?(?:doesn't|does\s+not|don't|do\s+not)\s+matter\s+(?:what|which|in\s+what|in\s+which)\s+(?:order|sequence)"
     r"(?:\s+you\s+(?:go\s+in|do\s+(?:them|it)(?:\s+in)?|take))?"
@@ -252,6 +256,7 @@ _STRICT = re.compile(
     r"|above|written))\s+(?:(?:exact|very|same|precise)\s+)?(?:order|sequence)\b"
     r"(?:\s+(?:as\s+)?(?:given|listed|written|stated|above|below))?"
     r"|\bin\s+the\s+(?:exact\s+)?(?:order|sequence)\s+(?:given|listed|written|stated|shown|above|below|i\s+(?:gave|listed))"
+    r"|\b(?:please\s+)?(?:keep|follow|stick\s+to)\s+(?:to\s+)?(?:this|that|the|my)\s+(?:order|sequence)\b"
     r"|\bin\s+(?:strict\s+)?(?:order|sequence)\s*(?=[,.;:!?]|$)|\bone\s+after\s+(?:the\s+)?(?:other|another)\b|\bone\s+by\s+one\b"
 )
 # "Before anything else, X": X comes first (not "X before Y").
@@ -370,9 +375,27 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"(?:[,;-]\s*|\s+)\b(?:thanks|thank\s+you|thx|ta|cheers|pls|plz|please)(?:\s+(?:a\s+lot|so\s+much|very\s+much|again"
      r"|robot|buddy))?\s*(?=[.!?]|$)", ""),
     (r"\b(?:um+|uh+|er+|erm+)\b,?", " "),
+    (rf"\b(?:minus|negative)\s+(?P<nw>{_NW_SEQ})\b", lambda m: "-" + _digits(m.group("nw"))),
+    # Spoken fillers: "you know", "like" before a verb or after "and", "so then".
+    (r",?\s*\byou\s+know\b,?", " "),
+    (r"\b(?:and\s+)?like\s+(?=(?:go|get|take|stop|head|check|look|find|visit|swing|pop|drop|make|grab|roll|nip|move|see|and)\b)",
+     lambda m: "and " if m.group(0).startswith("and") else ""),
+    (r"\bso\s+(?=then\b)", " "),
+    (r"(?<=[a-z])\s+so\s+(?=(?:go|get|take|stop|head|check|look|find|visit|swing|pop|drop|make|grab|roll|nip|move|see)\b)",
+     " then "),
+    # "after you visit the kiln go to the loom": a leading subordinate clause said without a comma.
+    (r"(?:^|(?<=[.;!?]\s))(?:after|once|when)\s+(?:you\s+)?(?:have\s+|'ve\s+)?(?P<c1>(?:visit|go\s+to|check|see|find|reach|look"
+     r"\s+at|stop\s+at|get\s+to|head\s+to|swing\s+by|drop\s+by|inspect|locate|are\s+done\s+with|finish\s+with)[^,.;:!?]+?)"
+     r"\s+(?P<v>(?:go|visit|check|look|find|head|get|swing|stop|take|pop|drop|move|walk|drive|navigate|proceed|inspect|locate"
+     r"|approach|reach|see|roll|nip|hop|travel)\b)", r"\g<c1>, then \g<v>"),
+    # An apposition said without a comma: "the kiln the one that's on", "the plant the one in the den".
+    (r"(?P<np>\bthe\s+(?:[\w'-]+\s+){0,3}?(?!and\b|then\b|or\b|to\b|at\b|of\b|by\b|in\b|on\b|is\b|are\b)[\w'-]+)\s+"
+     r"(?=the\s+one\b(?!\s+of\b))", r"\g<np>, "),
+    # Steps said without punctuation: "step one go to the sofa step two ...".
+    (r"\bstep\s+(?:\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten)\b\s*[:.)-]?\s*", "; "),
     (r"(?:(?<=^)|(?<=[\s:;,]))\(?\d{1,2}\)(?=\s*[a-z])", _list_marker),
     (r"(?:(?<=^)|(?<=[:;])|(?<=[:;]\s))\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ...; 2. find ..."
-    (r"\bdo\s+(?:them|these|those|it\s+all|all\s+of\s+them)(?=\s+(?:in|any|whatever|whichever)\b|\s*[.,;!?]|\s*$)", " "),
+    (r"\bdo\s+(?:them|these|those|this|that|it|it\s+all|all\s+of\s+them)(?=\s+(?:in|any|whatever|whichever)\b|\s*[.,;!?]|\s*$)", " "),
     # "has on or near it the lamp": with the lamp; "... has the lamp on or near it": the pronoun adds nothing.
     (r"\b(?:has|have)\s+on\s+or\s+(?:near|next\s+to|beside|by|close\s+to)\s+(?:it|them)\s+", "with "),
     (r"\s+on\s+or\s+(?:near|next\s+to|beside|by|close\s+to)\s+(?:it|them)\b", " "),
@@ -403,6 +426,11 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\s+on\s+the\s+(?:map|floor\s*plan|plan|grid)\b", " "),  # "at (3, 4) on the map"
     # "(x, y) = (3, 4)", "x/y = 3/4", "{x: 3, y: 4}", "3 (x) and 4 (y)", "whose coordinates are (3, 4)".
     (r"\(\s*x\s*,\s*y\s*\)\s*(?:=|:)\s*(?=[(\[])", " "),
+    (r"\b(?P<a>[xy])\s+(?:equals|is\s+equal\s+to|is)\s+", r"\g<a> = "),  # "x equals 3.5"
+    (rf"(?P<x>{NUM}|{_NW_SEQ})\s+comma\s+(?P<y>{NUM}|{_NW_SEQ})\b",  # spoken pairs: "three point five comma two"
+     lambda m: f"({_digits(m.group('x'))}, {_digits(m.group('y'))})"),
+    (rf"\bcoordinates?\s+(?P<x>{NUM}|{_NW_SEQ})\s+and\s+(?P<y>{NUM}|{_NW_SEQ})\b",
+     lambda m: f"({_digits(m.group('x'))}, {_digits(m.group('y'))})"),
     (rf"(?P<pre>\b[xy]\s*(?:(?:value\s+)?of\s+|=\s*|:\s*|is\s+|\s))(?P<nw>{_NW_SEQ})\b(?![-\w])",
      lambda m: m.group("pre") + _digits(m.group("nw"))),
     (rf"\b(?:with|having)\s+an?\s+x\s+(?:value\s+)?of\s+(?P<x>{NUM})\s*,?\s*(?:and\s+)?an?\s+y\s+(?:value\s+)?of\s+"
@@ -455,7 +483,8 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (rf"(?P<n>{NUM})\s*(?P<u>degrees?(?:\s+(?:celsius|c))?|°\s*c?)\s+below\s+(?:zero|freezing)", r"-\g<n> \g<u>"),
     (r"\b(?P<n>\d+|[a-z]+(?:-[a-z]+)?)-ish\b", r"about \g<n>"),
     # "whichever heater in the garage is warmest": the warmest heater in the garage.
-    (rf"\bwhichever\s+(?P<np>[^,;.()⟪]+?)\s+(?:is|are)\s+(?:the\s+)?(?P<sup>{_alt(L.SUPERLATIVES)})\b",
+    (rf"\bwhichever\s+(?P<np>(?:(?!whichever\b|is\b|are\b|and\b)[^,;.()⟪])+?)\s+(?:is|are)\s+(?:the\s+)?"
+     rf"(?P<sup>{_alt(L.SUPERLATIVES)})\b",
      r"the \g<sup> \g<np>"),
     # "colder than any other one in there", "warmer than all the others": a superlative.
     (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+(?:any|every|all|each)\s+(?:of\s+)?(?:the\s+)?(?:other|others)"
