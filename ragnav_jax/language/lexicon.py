@@ -89,7 +89,7 @@ DETERMINERS = frozenset(
 FILLER_NOUNS = frozenset(
     "it them that this there here one ones these those following each both all everything of three two four "
     "five places place spots spot locations objects things items targets goals stops waypoints ones them route routes "
-    "itinerary tour trip plan list circuit errands rounds order sequence task tasks job mission request "
+    "itinerary tour trip plan list circuit errands rounds order sequence task tasks job mission request robot note "
     "instructions agenda".split()
 )
 PRONOUN_ANCHORS = frozenset("it that this them there one".split())
@@ -124,6 +124,9 @@ RELATION_PHRASES: dict[str, str] = {
     "nearby": "near",
     "in the vicinity of": "near",
     "a few steps from": "near",
+    "in close proximity to": "near",
+    "in the proximity of": "near",
+    "within close proximity of": "near",
     "a few steps away from": "near",
     "a stone's throw from": "near",
     "a short walk from": "near",
@@ -349,6 +352,7 @@ SUBJECT_PRONOUNS = frozenset("you you've you're you'll you'd we we've we're i i'
 # Verbs and politeness that introduce a goal ("please head over to", "I need you to check").
 LEAD_PHRASES = (
     "please", "kindly", "now", "ok", "okay", "hey", "so", "and", "also", "then", "next", "first of all", "first",
+    "fourthly", "fifthly", "sixthly", "seventhly",
     "firstly", "to begin with", "to begin", "to start with", "to start", "second", "secondly", "third", "thirdly",
     "finally", "lastly", "last of all", "last", "after that", "afterwards", "afterward", "subsequently",
     "from there", "once there", "after this", "plus", "but", "robot",
@@ -408,7 +412,8 @@ LEAD_PHRASES = (
 # Leads after which a verb's -ing form follows ("begin by <verb>ing", "would you mind <verb>ing").
 ING_LEADS = frozenset({"by", "mind"})
 VERBS = (
-    "find your way to", "finding your way to", "find your way over to", "go round to", "going round to",
+    "report to", "attend to", "verify the condition of", "check the condition of", "inspect the condition of",
+    "carry out a check on", "carry out an inspection of", "verify", "find your way to", "finding your way to", "find your way over to", "go round to", "going round to",
     "pull up at", "pulling up at", "pull up by", "head across to", "heading across to", "go", "going", "head", "heading", "walk", "walking", "run", "move", "moving", "drive", "driving", "travel",
     "navigate", "navigating", "proceed", "return", "come", "get", "getting", "make your way", "take me",
     "take us", "bring me", "guide me", "lead me", "show me", "visit", "visiting", "find", "finding", "locate",

@@ -166,7 +166,7 @@ _VERB_BEFORE_SENSOR = re.compile(
     r"\b(?:(?:that|which|who)\s+)?(?:(?:is|are)\s+)?(?:currently\s+)?"
     r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
     r"|operates|kept|set|heated|cooled|holding|holds|staying|stays|scoring|scores|rated|rating|hovering|hovers"
-    r"|sitting|sits)(?:\s+(?:at|to|around))?(?:\s+the)?\s+(?=(?P<k>⟪[a-z]+⟫))"
+    r"|sitting|sits|exhibiting|exhibits|displaying|displays|recording|records|show|exhibit|display|record|register|read)(?:\s+(?:at|to|around))?(?:\s+(?:the|an?))?\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -239,6 +239,15 @@ _FREE = re.compile(
     r"|\b(?:either|any|each)\s+(?:one\s+)?(?:of\s+them\s+)?(?:can|could|may)\s+(?:come|go|be\s+done)\s+first"
     r"|\b(?:it\s+)?(?:makes|make)\s+no\s+difference\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
     r"|\b(?:it\s+)?(?:doesn't|does\s+not)\s+make\s+(?:a|any)\s+difference\s+(?:which|what)\b[^.;:!?⟪]*"
+    r"|\b(?:in\s+)?no\s+(?:prescribed|predetermined|mandated)\s+(?:order|sequence)"
+    r"|\bno\s+particular\s+(?:order|sequence)\s+is\s+(?:required|needed|necessary|prescribed|expected)"
+    r"|\b(?:the\s+)?(?:order|sequence)(?:\s+of\s+(?:the\s+)?(?:visits|tasks|stops|inspections|checks))?\s+(?:is|being)\s+"
+    r"(?:not\s+(?:prescribed|fixed|important|required|specified|mandated)"
+    r"|immaterial|unimportant|irrelevant|at\s+the\s+robot's\s+discretion|left\s+to\s+the\s+robot)"
+    r"|\b(?:the\s+)?order\s+in\s+which\s+this\s+is\s+done\s+is\s+(?:immaterial|unimportant|irrelevant|not\s+important)"
+    r"|\bin\s+(?:an?\s+)?(?:order|sequence)\s+of\s+(?:its|their|the\s+robot's)\s+(?:own\s+)?(?:choice|choosing)"
+    r"|\bin\s+whatever\s+(?:order|sequence)\s+the\s+robot\s+(?:considers|finds|deems|judges)\s+(?:most\s+)?[a-z]+"
+    r"|\bat\s+the\s+robot's\s+discretion"
     r"|\b(?:the\s+)?(?:order|sequence)(?:\s+is|'s)\s+(?:entirely\s+|totally\s+|completely\s+)?(?:flexible|not\s+important"
     r"|unimportant|up\s+to\s+you|your\s+(?:call|choice))"
     # "- any order", "(any order)", "whatever order works for you", "no particular order", "doesn't matter what order"
@@ -256,6 +265,7 @@ _STRICT = re.compile(
     r"|above|written))\s+(?:(?:exact|very|same|precise)\s+)?(?:order|sequence)\b"
     r"(?:\s+(?:as\s+)?(?:given|listed|written|stated|above|below))?"
     r"|\bin\s+the\s+(?:exact\s+)?(?:order|sequence)\s+(?:given|listed|written|stated|shown|above|below|i\s+(?:gave|listed))"
+    r"|\b(?:to\s+be\s+carried\s+out\s+)?in\s+the\s+(?:order|sequence)\s+(?:given|listed|indicated|specified|stated)"
     r"|\b(?:please\s+)?(?:keep|follow|stick\s+to)\s+(?:to\s+)?(?:this|that|the|my)\s+(?:order|sequence)\b"
     r"|\bin\s+(?:strict\s+)?(?:order|sequence)\s*(?=[,.;:!?]|$)|\bone\s+after\s+(?:the\s+)?(?:other|another)\b|\bone\s+by\s+one\b"
 )
@@ -369,6 +379,11 @@ def _list_marker(m: re.Match) -> str:
 
 
 _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for rx, rep in (
+    # A heading naming the kind of text: "Maintenance request:", "Task list (in the order given):", "Note for
+    # the robot:", "Care round:".
+    (r"^(?:[a-z]+\s+){0,3}?(?:request|note|notes|list|round|task|tasks|instructions?|memo|reminder|job|jobs|errands?|agenda"
+     r"|plan|route|checklist|itinerary)(?:\s+for\s+(?:the\s+)?robot)?(?:\s*\([^()]*\))?\s*:", lambda m: m.group(0)[
+        m.group(0).find("("):m.group(0).rfind(")") + 1] + " ;" if "(" in m.group(0) else " "),
     # Greetings and closing courtesies: "hi,", "ok so", "quick one:", ", thanks", "cheers", "pls".
     (r"^(?:(?:hi|hey|hello|ok|okay|right|so|alright|well|um+|uh+|er+|quick\s+one|robot)(?:\s+(?:there|robot|buddy|so|then)"
      r")?\s*[,:!.]?\s+)+", ""),
@@ -393,8 +408,39 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"(?=the\s+one\b(?!\s+of\b))", r"\g<np>, "),
     # Steps said without punctuation: "step one go to the sofa step two ...".
     (r"\bstep\s+(?:\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten)\b\s*[:.)-]?\s*", "; "),
-    (r"(?:(?<=^)|(?<=[\s:;,]))\(?\d{1,2}\)(?=\s*[a-z])", _list_marker),
-    (r"(?:(?<=^)|(?<=[:;])|(?<=[:;]\s))\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ...; 2. find ..."
+    (r"(?:(?<=^)|(?<=[\s:;,]))(?:\(?\d{1,2}\)|\([a-h]\))(?=\s*[a-z])", _list_marker),
+    (r"(?:(?<=^)|(?<=[:;!?])|(?<=[:;.!?]\s))\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ... 2. find ..."
+    # Remarks that ask for nothing: "Any irregularities should be noted in the log.", "No further action is
+    # required.", purpose clauses ("so that a check can be carried out", "(for the maintenance log)").
+    (r"(?:^|(?<=[.!?;]\s)|(?<=[.!?;]))\s*(?:any\s+(?:irregularities|issues|problems|findings)|no\s+further\s+action"
+     r"|that\s+is\s+all|that's\s+all|thank\s+you|many\s+thanks|please\s+report\s+back)\b[^.!?]*[.!?]?", " "),
+    (r",?\s*\b(?:(?<!\bor\s)so\s+that(?!')|in\s+order\s+to|in\s+order\s+that|so\s+as\s+to|for\s+the\s+purpose\s+of|with\s+a\s+view\s+to"
+     r"|as\s+part\s+of)\b[^,;.()⟪]*", " "),
+    (r"\((?:for|this|no|as|purely|just)\b[^()]*\)", " "),
+    (r",?\s*\bfor\s+(?:inspection|checking|maintenance|safety|a\s+(?:check|look|visual\s+check|routine\s+inspection))"
+     r"(?:\s+purposes)?\b", " "),
+    (r"\bnormali[sz]ed\s+difference\s+vegetation\s+index\s*(?:\(\s*ndvi\s*\))?", "ndvi"),
+    # The robot as the subject of a formal request: "the robot should first proceed to", "it is requested that
+    # the robot visit", "it is to examine", "X is to be inspected".
+    (r"\bit\s+is\s+(?:requested|asked|required)\s+that\s+(?:the\s+)?robot\s+", " "),
+    (r"\b(?:the\s+)?robot\s+(?:considers|finds|deems|judges|thinks)\s+(?:to\s+be\s+)?(?:most\s+|best\s+)?[a-z]+\b", " "),
+    (r"\b(?:the\s+)?robot\s+(?:should|must|shall|will|is\s+to|is\s+(?:requested|asked|required|expected)\s+to|needs\s+to|has\s+to"
+     r"|ought\s+to|may|can)\s+", " "),
+    (r"\b(?:it|they)\s+(?:should|must|shall|will|is\s+to|are\s+to|needs\s+to|has\s+to|ought\s+to|may|can)\s+(?:then\s+)?", " "),
+    (r"\bit\s+is\s+(?:then\s+)?to\s+", " "),
+    (r"\(?\s*\bto\s+be\s+(?:carried\s+out|done|completed|performed)\b\s*\)?", " "),
+    (r"\b(?:is|are)\s+to\s+be\s+(?:examined|inspected|visited|checked|attended\s+to|located|approached|looked\s+at|verified|seen"
+     r"|reported\s+to)\b", " "),
+    (r"\b(?:is|are)\s+to\s+be\s+found\b", "is"),
+    (r"\b(?:which\s+|that\s+)?(?:is|are)\s+the\s+ones?\s+(?=with\b)", ""),  # "and is the one with the lamp"
+    (r"\b(?:recorded|measured|registered|current)\s+(?=temperature|humidity|relative|ndvi|reading)", ""),
+    (r"\bin\s+the\s+(?:same\s+)?room\s+where\s+(?P<np>(?:the|a|an)\s+[^,;.()⟪]+?)\s+(?:is|are|stands?|sits?|lives?|lies?)\b"
+     r"(?!\s+(?:next|near|by|beside|on|in|under|close|not|right|opposite|behind|above))", r"in the room containing \g<np>"),
+    (r"\b(?:the\s+)?(?:position|location|point|coordinates)\s+(?:given|specified|indicated)\s+by\s+", " "),
+    (r"\bupon\s+completion\s+of\s+(?:the\s+|its\s+)?(?:visit|inspection|check|trip)\s+(?:to|of)\b", "visit"),
+    (r"\bprior\s+to\s+(?=[a-z]+ing\b)", "before "),
+    (r"\bupon\s+completion(?:\s+of\s+(?:this|that|which))?\b,?", " then "),
+    (r"\b(?:which|that)\s+is\s+to\s+be\s+found\b", "which is"),
     (r"\bdo\s+(?:them|these|those|this|that|it|it\s+all|all\s+of\s+them)(?=\s+(?:in|any|whatever|whichever)\b|\s*[.,;!?]|\s*$)", " "),
     # "has on or near it the lamp": with the lamp; "... has the lamp on or near it": the pronoun adds nothing.
     (r"\b(?:has|have)\s+on\s+or\s+(?:near|next\s+to|beside|by|close\s+to)\s+(?:it|them)\s+", "with "),
@@ -530,8 +576,8 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"(?:m|metres?|meters?)?\s+along\s+the\s+y(?:-|\s)?axis(?:\s+(?:from|of|measured\s+from)\s+the\s+origin)?",
      r"at (\g<x>, \g<y>)"),
     # A superlative's scope: "the warmest among those in the den", "the coldest of them all in the den".
-    (r"\s*\b(?:among|amongst|of|out\s+of)\s+(?:all\s+)?(?:those|these|them|the\s+ones)(?:\s+(?:that\s+are|which\s+are"
-     r"|located|positioned|found|kept|standing|sitting))?(?=\s+(?:in|inside|within|over\s+in)\b)", " "),
+    (r"\s*\b(?:among|amongst|of|out\s+of)\s+(?:all\s+)?(?:those|these|them|the\s+ones)(?:\s+(?:that\s+are|which\s+are|that\s+is|which\s+is"
+     r"|located|positioned|found|kept|standing|sitting|situated|placed))*(?=\s+(?:in|inside|within|over\s+in)\b)", " "),
     (r"\bthe\s+\(\s*x\s*,\s*y\s*\)\s+(?:position|coordinates?|point|location|spot)\s+(?=[(\[])", " "),
     (r"\b(?:the\s+)?(?:point|spot|position|location|place)\s+(?:with|where|whose)\s+(?=x\b)", " "),
     (r"\b(?P<axis>[xy])\s*(?:≈|~|≃|=~)\s*", r"\g<axis>="),
