@@ -28,6 +28,7 @@ def test_unseen_episodes_are_deterministic_and_resolve(unseen_scene, split):
     seen_words = generate_episodes([unseen_scene], load_config(None, SMALL).episodes, seed=3)
     assert {p.episode.instruction for p in a}.isdisjoint({p.episode.instruction for p in seen_words})
     for p in a:  # every goal's description is about an unseen-catalogue object (checked by the generator too)
+        assert all(sg.text.lower() in p.episode.instruction.lower() for sg in p.truth.subgoals)
         for sg, gid in zip(p.truth.subgoals, p.episode.goals):
             o = unseen_scene.object_by_id(gid)
             assert o.category not in CATALOG and category_matches(o.category, sg.target.head)
