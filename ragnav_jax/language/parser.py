@@ -362,6 +362,7 @@ def _number_words(s: str) -> str:
 # Canonical forms: surface variants of English that carry no meaning of their own for the task chain are
 # rewritten before anything is read. Each rule is a general construction, not a template's wording.
 
+
 def _digits(words: str) -> str:
     """'five point two' -> '5.2' (unchanged when the words are no number)."""
     v = words_to_number(words)
@@ -372,6 +373,14 @@ _ORD_ALT = "|".join(L.ORDINAL_WORDS)
 # (reading, sign) -> a superlative that says it ("warmest"): "hotter than any other" is the hottest.
 _SUPER_OF_SIGN = {v: k for k, v in reversed(list(L.SUPERLATIVES.items()))}
 _PRON_OBJ = r"(?:that\s+one|this\s+one|that\s+spot|that\s+place|it|there|them|that|this)"
+
+
+def _heading(m: re.Match) -> str:
+    """'Task list (in the order given):' -> '(in the order given) ;': the heading goes, an order it states stays."""
+    h = m.group(0)
+    return h[h.find("(") : h.rfind(")") + 1] + " ;" if "(" in h else " "
+
+
 def _list_marker(m: re.Match) -> str:
     """'1) ', '(2) ': a list position unless it closes a bracket opened before it ('(3, 4) then')."""
     before = m.string[: m.start()]
@@ -382,8 +391,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # A heading naming the kind of text: "Maintenance request:", "Task list (in the order given):", "Note for
     # the robot:", "Care round:".
     (r"^(?:[a-z]+\s+){0,3}?(?:request|note|notes|list|round|task|tasks|instructions?|memo|reminder|job|jobs|errands?|agenda"
-     r"|plan|route|checklist|itinerary)(?:\s+for\s+(?:the\s+)?robot)?(?:\s*\([^()]*\))?\s*:", lambda m: m.group(0)[
-        m.group(0).find("("):m.group(0).rfind(")") + 1] + " ;" if "(" in m.group(0) else " "),
+     r"|plan|route|checklist|itinerary)(?:\s+for\s+(?:the\s+)?robot)?(?:\s*\([^()]*\))?\s*:", _heading),
     # Greetings and closing courtesies: "hi,", "ok so", "quick one:", ", thanks", "cheers", "pls".
     (r"^(?:(?:hi|hey|hello|ok|okay|right|so|alright|well|um+|uh+|er+|quick\s+one|robot)(?:\s+(?:there|robot|buddy|so|then)"
      r")?\s*[,:!.]?\s+)+", ""),
