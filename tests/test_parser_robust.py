@@ -507,3 +507,15 @@ def test_later_round_constructions_agree(path):
                 c.setdefault("value", None)
     bad = {row["text"]: d for row in rows if (d := row_differences(row))}
     assert not bad, bad
+
+
+@pytest.mark.parametrize("text", ["Go to the lamp, then the sofa or the armchair, whichever is closer.",
+                                  "Visit either the kettle or the toaster.",
+                                  "Check the fern or the palm, whichever of the two is nearer"])
+def test_a_choice_between_objects_is_a_clear_error(text):
+    """A task chain holds goals, not alternatives: a choice is refused with a message that names it (rather
+    than read as a goal called "is closer")."""
+    with pytest.raises(ParseError, match="choice between objects"):
+        parse_instruction(text)
+    chain = parse_instruction("Go to the kettle with the toaster either on it or beside it.")
+    assert [sg.target.head for sg in chain.subgoals] == ["kettle"]

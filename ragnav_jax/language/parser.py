@@ -191,6 +191,11 @@ _BAD_BEFORE_UNIT = re.compile(r"(?P<all>(?P<bad>[^\s⟪⟫]+)\s*(?:\bdegrees?\b|
 _BAD_PAREN = re.compile(r"[(\[][^()\[\]]*\d[^()\[\]]*[)\]]")
 _BAD_XY = re.compile(r"\b[xy]\s*[=:]\s*\S*")
 _MULTIDOT = re.compile(r"\d+\.\d+\.\d")
+# "the sofa or the armchair, whichever is closer", "either the kettle or the toaster": a choice of objects.
+_ALTERNATIVES = re.compile(
+    r"\bwhichever\s+(?:one\s+|of\s+(?:the\s+)?(?:two|them|those|these)\s+)?(?:is|'s|are)\s+(?:closer|nearer|closest|nearest"
+    r"|quicker|easier|more\s+convenient)\b|\beither\s+(?:the|a|an|my|your)\s+[^,;.]*?\bor\s+(?:the|a|an|my|your)\b"
+)
 
 _FREE = re.compile(
     r"\b(?:in|by|following|using)\s+(?:any|whatever|whichever|an?\s+(?:efficient|optimal|sensible|good|smart)|"
@@ -1313,6 +1318,10 @@ def parse_instruction(text: str) -> TaskChain:
     m = _MULTIDOT.search(s)
     if m:
         raise ParseError(f"could not read the number starting '{m.group(0)}'")
+    m = _ALTERNATIVES.search(s)
+    if m:  # a task chain holds goals, not a choice between objects
+        raise ParseError(f"'{m.group(0)}': a choice between objects is not supported; name the one to visit "
+                         "(or list both to visit both)")
     marks = _Marks()
     s = _number_words(_canonical(s))
     s = _FIRST_OF_ALL.sub("first", s)
