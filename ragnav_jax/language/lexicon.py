@@ -333,7 +333,9 @@ COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or 
                       "and above": "ge", "and below": "le",
                       "or thereabouts": "approx", "or so": "approx", "give or take": "approx", "and under": "le",
                       "at the very least": "ge", "at the least": "ge", "at the most": "le", "at the very most": "le",
-                      "or more or less": "approx"}
+                      "or more or less": "approx", "or warmer": "ge", "or hotter": "ge", "or colder": "le",
+                      "or cooler": "le", "or drier": "le", "or damper": "ge", "or more humid": "ge",
+                      "or healthier": "ge", "or greener": "ge"}
 
 NUMBER_WORDS = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
@@ -404,7 +406,8 @@ LEAD_PHRASES = (
     "you", "you can", "you could", "you may", "you might", "you will", "you'll", "you then", "then you",
     # "begin by tracking down", "would you mind checking": the -ing verb after these is dropped (parser)
     "begin by", "start by", "start off by", "finish by", "finish off by", "end by", "wrap up by", "kick off by",
-    "round off by", "conclude by", "do you mind", "would you mind",
+    "round off by", "conclude by", "do you mind", "would you mind", "finish up by", "wind up by", "end up by",
+    "start by", "begin by",
     # sequencing adverbs
     *ORDINAL_WORDS, "later", "later on", "eventually", "ultimately", "in the end", "to conclude", "to close",
     "to round off", "following that", "following this", "after which", "thereafter", "from there on",

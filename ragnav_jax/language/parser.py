@@ -202,7 +202,7 @@ _FREE = re.compile(
     r"the\s+(?:best|most\s+efficient|quickest|fastest|shortest|optimal|cheapest|most\s+convenient|smartest))"
     r"\s+(?:order|sequence)(?:\s+(?:is|you\s+(?:like|want|prefer|choose|wish|think\s+best)|that\s+is|works?|seems?"
     r"|makes\s+sense)(?:\s+(?:quickest|fastest|shortest|best|most\s+efficient|efficient|optimal|for\s+you|fine|easier|easiest"
-    r"|simplest|simpler|better|quicker|more\s+convenient|most\s+convenient|ok|okay|good"
+    r"|simplest|simpler|better|quicker|more\s+convenient|most\s+convenient|ok|okay|good|suits\s+you|suit\s+you"
     r"|cheapest|closest|easiest))?)*"
     r"|\b(?:the\s+)?order\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+(?:matter|important)"
     r"|\b(?:in\s+)?no\s+particular\s+order|\bany\s+order\s+(?:is\s+fine|works|will\s+do)"
@@ -262,6 +262,10 @@ _FREE = re.compile(
     r"|\b(?:it\s+)?(?:doesn't|does\s+not|don't|do\s+not)\s+matter\s+(?:what|which|in\s+what|in\s+which)\s+(?:order|sequence)"
     r"(?:\s+you\s+(?:go\s+in|do\s+(?:them|it)(?:\s+in)?|take))?"
     r"|\b(?:i\s+)?(?:don't|do\s+not)\s+(?:mind|care)\s+(?:which|what|about\s+the)\s+(?:order|sequence)"
+    r"(?:\s+you\s+(?:take|do|visit|see|check)\s+(?:them|these|those)(?:\s+in)?)?"
+    r"|\b(?:i\s+)?(?:don't|do\s+not)\s+(?:mind|care)\s+(?:which|what)\s+(?:one\s+)?(?:you\s+)?(?:do|visit|see|check|go\s+to|take)"
+    r"\s+first\b"
+    r"|\bany\s+(?:order|sequence)(?:'s|\s+is)\s+(?:fine|ok|okay|good)\b"
     r"|\b(?:it\s+)?(?:does\s+not|doesn't|won't|will\s+not)\s+matter\s+(?:which|what|in\s+which)\b[^.;:!?⟪]*"
 )
 # Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
@@ -445,7 +449,8 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\b(?:is|are)\s+to\s+be\s+(?:examined|inspected|visited|checked|attended\s+to|located|approached|looked\s+at|verified|seen"
      r"|reported\s+to)\b", " "),
     (r"\b(?:is|are)\s+to\s+be\s+found\b", "is"),
-    (r"\b(?:which\s+|that\s+)?(?:is|are)\s+the\s+ones?\s+(?=with\b)", ""),  # "and is the one with the lamp"
+    (r"\b(?P<c>and|which|that)\s+(?:is|are)\s+the\s+ones?\s+(?=with\b)",  # "and is the one with the lamp"
+     lambda m: "and " if m.group("c") == "and" else ""),
     (r"\b(?:recorded|measured|registered|current)\s+(?=temperature|humidity|relative|ndvi|reading)", ""),
     (r"\bin\s+the\s+(?:same\s+)?room\s+where\s+(?P<np>(?:the|a|an)\s+[^,;.()⟪]+?)\s+(?:is|are|stands?|sits?|lives?|lies?)\b"
      r"(?!\s+(?:next|near|by|beside|on|in|under|close|not|right|opposite|behind|above))", r"in the room containing \g<np>"),
@@ -471,6 +476,17 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"\s*:", "; "),
     (r"\b(?P<w>next|first)\s+(?:up|off)\b", r"\g<w>"),
     (r"\b(?:both|each\s+of|all\s+of)\s+(?=the\b)", ""),  # "visit both the kiln and the loom"
+    (r"\b(?P<o>order|sequence)'s\b", r"\g<o> is"),
+    (r"\b(?:suits|suit)\s+you\b", "you like"),
+    (r"^just\s+(?:the\s+)?one\s+(?:stop|thing|place|task|errand|job)(?:\s+(?:this\s+time|today|for\s+now))?\s*[:,.-]", " "),
+    (r"\bpay\s+(?P<np>the\s+[^,;.()⟪]+?)\s+a\s+(?:quick\s+|short\s+|brief\s+)?visit\b", r"visit \g<np>"),
+    # "save the kiln for the end", "leave the loom until last": the goal comes last (written last, as is usual).
+    (r"\b(?:save|leave|keep)\s+(?P<np>the\s+(?:[^.;()⟪]|\.(?=\d))+?),?\s+(?:for|until|till|to)\s+(?:the\s+)?(?:very\s+)?(?:end|last|finish)\b",
+     r"finally visit \g<np>"),
+    # "the one with the lowest reading out of every lamp in the den": the lamp with the lowest reading in the den.
+    (r"\bthe\s+one\s+(?P<mid>[^,;.()⟪]*?)\s+(?:out\s+of|of|among)\s+(?P<q>every|each|all(?:\s+the)?|the)\s+"
+     r"(?P<np>(?:[a-z'-]+\s+){0,2}?[a-z'-]+?)(?=\s+(?:in|inside|on|at|near|by|over|down)\b|\s*[,;.!?]|\s+-\s|\s*$)",
+     lambda m: f"the {m.group('np') if m.group('q') in ('every', 'each') else _singular(m.group('np'))} {m.group('mid')}"),
     # "the nearest lamp to the sofa" is the lamp nearest to the sofa; "the nearest lamp" (to the robot) names
     # a lamp: which one is left to retrieval and planning (the chain has no distance-to-robot constraint).
     (r"\bthe\s+(?:nearest|closest)\s+(?P<np>[a-z][\w'-]*(?:\s+[a-z][\w'-]*){0,2}?)\s+to\s+(?=(?:the|a|an|my|your)\b)",
