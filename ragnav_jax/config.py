@@ -21,7 +21,7 @@ from ragnav_jax.errors import ConfigError
 
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
 EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
-                  "unseen")
+                  "unseen_dev7", "unseen")
 
 ROOM_TYPES = (
     "kitchen",
@@ -121,8 +121,8 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
-    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev6
-    # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev6.py: parser rounds 2-7 were developed
+    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev7
+    # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev7.py: parser rounds 2-8 were developed
     # against them, each measured first as the held-out set) | unseen (phrasings_heldout.py: the current
     # held-out set, by an author who never read the parser, never developed against);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())

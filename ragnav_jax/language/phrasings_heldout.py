@@ -1,168 +1,340 @@
 """Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split.
 
-Measured once after parser round 7 and never developed against. Beside the seen templates and unseen_dev1-6: the same four functions, arguments
-and meanings, written by a fifth author who never read the rule parser. The style is a careful human tester
-probing a home robot with tricky but natural English, written by hand to check that the robot really
-understands:
+Measured once after parser round 8 and never developed against.
 
-- goals: stacked prenominal modifiers as given ("the small grey fabric sofa"), attributes moved into an
-  apposition ("the kettle — the copper one —") or a relative clause ("the sofa, which is grey,"); states as
-  relative clauses ("the lamp that's been left switched on", "the toolbox which is open") or before the noun
-  when one word ("the empty recycling bin"); the room directly or in brackets ("the heater (in the pantry)");
-  anything further in a "the one ..." apposition ("the lamp in the study, the one next to the sofa");
-  anchors with clauses of their own ("next to the table that has the monitor") always come last, and a second
-  clause-bearing anchor restarts with "and that same lamp is also ...", so nothing attaches to the wrong noun;
-- readings: numbers as digits ("25", "-5", ".7", "0.70"), words ("twenty-five", "minus five", "zero point
-  seven") and units "°C", "ºC", "degrees", "degrees Celsius", "%", "per cent", "percent"; comparatives in new
-  ways ("no warmer than 20 degrees", "at least as humid as 60 percent", "at 20 °C or cooler", "reading 40 % or
-  more"); superlatives as adjectives ("the coolest lamp"), "whichever lamp in the study is the coolest" or
-  "the one with the highest temperature reading out of every lamp in the study";
-- coordinates: "(3.5, 2)", "x = 3.5, y = 2", "x=3.5 m, y=2 m", "[3.5, 2]", "x three point five, y two";
-- strict order: "before anything else ...", "..., and only after that ...", "leave X until last", "save X for
-  the end", numbered steps, "your first stop ..., your second ..., and your last ..."; free order: "any order's
-  fine", "I don't mind which you do first", "in whatever order suits you", "there's no set order".
+Written by a sixth author who never read the rule parser, to measure how far it generalises. Same four
+functions, arguments and meanings as the other template sets. The style is messages typed into a home-robot
+phone app by the people of one household:
+
+- a parent in a hurry: terse, everything packed into one noun phrase ("the teal corduroy bean bag by the
+  crib", "the games room's vintage jukebox", "the kettle (kitchen)"), "A, then B, then C. In that order.",
+  "A → B → C", "Any order.";
+- a teenager: lowercase, "rn", "plz", "u", "then the", "idc what order", full stops instead of lists, and
+  now and then the order backwards ("check B rn. but before that find A": A is visited first);
+- an older relative: polite and wordy ("Would you be so kind as to ...", "once you have done that",
+  "and to finish, ...", "I'm not fussy about the order");
+- a tidy-minded person: semicolon lists and numbered steps ("In this order: 1) ...; 2) ...; 3) ...").
+
+Goals: attributes before the noun exactly as given; states ("switched on", "open", "empty") before the noun,
+in a relative clause ("that's currently switched on") or in brackets right after the noun; the room as
+"in the X", "(X)" or a possessive ("the nursery's ..."), always before any relation so that nothing after
+an anchor can attach to it; anchors with their own relation take a relative clause ("next to the credenza
+that's itself near the harp", "by the shelf unit that has the work light"). Readings: digits, words
+("twenty-two", "minus eighteen"), decimals ("20.0", ".35", "0.40"), "°C", "deg", "degrees", "C", "%",
+"percent", "per cent"; comparatives in everyday words ("hotter than", "at 20 °C or more", "no warmer than",
+"scoring under .3 on NDVI", "at 52 deg, give or take"); superlatives as adjectives ("the coldest", "the least
+healthy") or tails ("with the lowest humidity", "that's running hottest").
+Coordinates: "(3.5, 2)", "x 3.5 y 2", "x=3.5, y=2", "3.5/2", "[3.5, 2]", "x: 3.5, y: 2", always x then y.
 
 Every draw comes from the NumPy generator passed in, so a seed gives the same text.
 """
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
-from ragnav_jax.language.types import SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
-# Numbers
+# Small helpers
 
 _ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen")
 _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
 
 
-def _int_words(n: int) -> str:
-    """0 <= n < 1000 in words: 'twenty-five', 'three hundred and eighty', 'nine hundred'."""
+def number_words(n: int) -> str:
+    """An integer in [-99, 99] in words: 22 -> 'twenty-two', -18 -> 'minus eighteen'."""
+    if n < 0:
+        return "minus " + number_words(-n)
     if n < 20:
         return _ONES[n]
-    if n < 100:
-        return _TENS[n // 10] + ("" if n % 10 == 0 else "-" + _ONES[n % 10])
-    rest = n % 100
-    return f"{_ONES[n // 100]} hundred" + ("" if rest == 0 else " and " + _int_words(rest))
+    t, o = divmod(n, 10)
+    return _TENS[t] + ("" if o == 0 else "-" + _ONES[o])
 
 
-def _words(text: str) -> str | None:
-    """A decimal numeral ('-5', '0.65', '22.5', '3') in words, or None where that would be clumsy."""
-    m = re.fullmatch(r"(-?)(\d+)(?:\.(\d+))?", text)
-    if not m or int(m.group(2)) >= 1000 or (m.group(3) and len(m.group(3)) > 2):
-        return None
-    out = ("minus " if m.group(1) and float(text) != 0 else "") + _int_words(int(m.group(2)))
-    if m.group(3):
-        out += " point " + " ".join(_ONES[int(d)] for d in m.group(3))
+def split_attributes(t: Target) -> tuple[list[str], list[str]]:
+    """(attributes written before the noun, states) of a target: the phrase holds the former in order."""
+    mods = t.phrase[: len(t.phrase) - len(t.head)].split() if t.phrase.endswith(t.head) else t.phrase.split()
+    pre, states, i = [], [], 0
+    for a in t.attributes:
+        w = a.split()
+        if w and mods[i : i + len(w)] == w:
+            pre.append(a)
+            i += len(w)
+        else:
+            states.append(a)
+    return pre, states
+
+
+def _and(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+# ----------------------------------------------------------------------------------------------------
+# Relations and anchors
+
+_REL = {
+    "near": ("near", "close to", "not far from"),
+    "next_to": ("next to", "alongside", "just next to"),
+    "beside": ("beside", "just beside"),
+    "by": ("by", "just by"),
+    "on": ("on", "on top of", "sitting on"),
+    "under": ("under", "underneath", "beneath"),
+    "above": ("above", "hanging above"),
+    "in": ("in", "inside"),
+    "with": ("with",),
+    "in_room_with": ("in the same room as", "in the room with"),
+    "in_front_of": ("in front of",),
+    "behind": ("behind", "just behind"),
+    "opposite": ("opposite", "across from", "facing"),
+    "left_of": ("to the left of", "left of"),
+    "right_of": ("to the right of",),
+}
+
+
+def is_plural(head: str) -> bool:
+    """'shelves', 'drums' take 'that are'; 'cactus', 'glass', 'iris' do not."""
+    w = head.split()[-1] if head.split() else head
+    return w.endswith("s") and not w.endswith(("ss", "us", "is", "ics"))
+
+
+def _rel_words(rng, r: Relation) -> str:
+    """The words of a relation; 'in the same room as' before an anchor with a clause of its own, so the
+    clause cannot be read as the room's."""
+    if r.type == "in_room_with" and r.anchor.relations:
+        return "in the same room as"
+    return _pick(rng, _REL[r.type])
+
+
+def _that_is(rng, plural: bool, extra: tuple[str, ...] = ()) -> str:
+    opts = ("that are", "which are", "that are" ) if plural else ("that is", "that's", "which is")
+    return _pick(rng, opts + tuple(f"{opts[0]} {e}" for e in extra))
+
+
+def _that_has(rng, plural: bool) -> str:
+    return _pick(rng, ("that have", "which have") if plural else ("that has", "which has"))
+
+
+def _anchor(rng, t: Target) -> str:
+    """An anchor noun phrase: a state before a bare noun ('the switched off steam iron') or in brackets after
+    a modified one ('the burgundy tumble dryer (switched on)'); its own relations as a relative clause."""
+    pre, states = split_attributes(t)
+    plural = is_plural(t.head)
+    if states and not pre and len(states) == 1:
+        s = f"the {states[0]} {t.phrase}"
+    elif states:
+        s = f"the {t.phrase} ({' and '.join(states)})"
+    else:
+        s = f"the {t.phrase}"
+    rels = list(t.relations)
+    if not rels:
+        return s
+    if len(rels) == 1 and rels[0].type == "with" and not rels[0].anchor.relations and rng.uniform() < 0.5:
+        return f"{s} with {_anchor(rng, rels[0].anchor)}"
+    rels.sort(key=lambda r: bool(r.anchor.relations))  # a clause-bearing anchor goes last
+    parts = []
+    for i, r in enumerate(rels):
+        a = _anchor(rng, r.anchor)
+        if r.type == "with":
+            parts.append(f"{_that_has(rng, plural) if i == 0 else ('have' if plural else 'has')} {a}")
+        else:
+            lead = _that_is(rng, plural, ("itself",) if not plural else ()) if i == 0 else ""
+            parts.append(f"{lead} {_rel_words(rng, r)} {a}".strip())
+    return f"{s} " + " and ".join(parts)
+
+
+def _relations(rng, t: Target) -> str:
+    """The target's relations, after everything else in the goal: a prepositional phrase or a clause."""
+    rels = sorted(t.relations, key=lambda r: bool(r.anchor.relations))
+    plural = is_plural(t.head)
+    if len(rels) == 1:
+        r = rels[0]
+        a = _anchor(rng, r.anchor)
+        if r.type == "with":
+            return _pick(rng, (f"with {a}", f"with {a}", f"{_that_has(rng, plural)} {a}"))
+        if r.type == "on" and rng.uniform() < 0.3:
+            return f"{_pick(rng, ('sitting on', 'standing on', 'resting on'))} {a}"
+        if rng.uniform() < 0.7:
+            return f"{_rel_words(rng, r)} {a}"
+        return f"{_that_is(rng, plural)} {_rel_words(rng, r)} {a}"
+    be, have = ("are", "have") if plural else ("is", "has")
+    parts = [f"{have} {_anchor(rng, r.anchor)}" if r.type == "with" else f"{be} {_rel_words(rng, r)} {_anchor(rng, r.anchor)}"
+             for r in rels]
+    return "that " + " and ".join(parts[:-1]) + " and also " + parts[-1]
+
+
+# ----------------------------------------------------------------------------------------------------
+# Goals
+
+
+def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
+    """A goal as a household member types it: 'the teal corduroy bean bag by the crib', 'the games room's
+    vintage jukebox', 'the toy chest (open) in the nursery', 'the heater in the pantry that's over 20 °C', 'the
+    coldest chest freezer in the garage', 'the guitar at x 3.5 y 2', 'the lamp next to the credenza that has
+    the record player'. Relations always come last, so nothing written after an anchor belongs to the goal.
+    """
+    t = sg.target
+    pre, states = split_attributes(t)
+    plural = is_plural(t.head)
+    room = sg.room
+    pre_noun = f"{prefix} " if prefix else ""
+    # room: possessive, bracketed straight after the noun, or "in the X" after the noun's own modifiers
+    room_style = None
+    if room:
+        room_style = _pick(rng, ("in", "in", "in", "possessive", "bracket"))
+    # states: before the noun (one state, no superlative adjective), in brackets, or a relative clause
+    state_style = None
+    if states:
+        before_ok = len(states) == 1 and not prefix and (not pre or " " not in states[0])  # not "switched off vintage"
+        opts = ["clause", "clause", "bracket"] + (["before"] if before_ok else [])
+        state_style = _pick(rng, opts)
+        if state_style == "bracket" and room_style == "bracket":
+            state_style = "clause"
+    det = f"the {room}'s " if room_style == "possessive" else "the "
+    before = (states[0] + " ") if state_style == "before" else ""
+    s = det + pre_noun + before + t.phrase
+    post: list[tuple[str, str]] = []  # (kind, text) of the modifiers after the noun, in order
+    if state_style == "bracket":
+        s += " (" + " and ".join(states) + ")"
+    if room_style == "bracket":
+        s += f" ({_pick(rng, (room, 'in the ' + room))})"
+    if state_style == "clause":
+        post.append(("state", f"{_that_is(rng, plural, ('currently',))} {' and '.join(states)}"))
+    if hint:
+        post.append(("hint", hint))
+    if room_style == "in":
+        post.append(("room", f"in the {room}"))
+    if tail:
+        if plural and tail.startswith("that's "):
+            tail = "that are " + tail[len("that's "):]
+        post.append(("tail", tail))
+    if t.relations:
+        post.append(("rel", _relations(rng, t)))
+    out = s
+    for i, (kind, text) in enumerate(post):
+        if i == 0:
+            out += " " + text
+        elif kind == "tail" and post[i - 1][0] == "room" and text.startswith(("that", "which", "whose", "with")):
+            out += ", the one " + text  # "the heater in the pantry, the one that's over 20 °C": not the pantry's
+        else:
+            out += ", " + text  # every further modifier restarts after a comma, so it belongs to the goal
     return out
-
-
-def _digits(rng, text: str) -> str:
-    """The numeral as typed: '-5' or '−5' (a typographic minus), '.7' for '0.7', '0.70' for '0.7'."""
-    if text.startswith("-") and rng.uniform() < 0.25:
-        return "\u2212" + text[1:]
-    if text.startswith("0.") and rng.uniform() < 0.35:
-        return text[1:]
-    if re.fullmatch(r"0\.\d", text) and rng.uniform() < 0.2:
-        return text + "0"
-    return text
-
-
-def _amount(rng, reading: str, vtxt: str, need_unit: bool) -> tuple[str, str]:
-    """(number with its unit as written, unit code)."""
-    words = _words(vtxt) if rng.uniform() < 0.3 else None
-    num = words if words is not None else _digits(rng, vtxt)
-    if reading == "temperature_c":
-        if not need_unit and rng.uniform() < 0.15:
-            return num, ""
-        if words is not None:
-            return num + _pick(rng, (" degrees", " degrees Celsius")), "c"
-        return num + _pick(rng, (" °C", "°C", " ºC", " degrees", " degrees Celsius", " degrees C")), "c"
-    if reading == "humidity_pct":
-        if not need_unit and rng.uniform() < 0.15:
-            return num, ""
-        if words is not None:
-            return num + _pick(rng, (" per cent", " percent")), "%"
-        return num + _pick(rng, ("%", " %", " per cent", " percent")), "%"
-    return num, ""
 
 
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases
 
-# (reading, comparator) -> templates; {v} is the amount. "named" ones name the reading (no unit needed).
-_CMP = {
-    ("temperature_c", "gt"): (("warmer than {v}", 0), ("hotter than {v}", 0), ("with a temperature above {v}", 1),
-                              ("reading more than {v}", 0), ("whose temperature is over {v}", 1)),
-    ("temperature_c", "ge"): (("that's at least {v}", 0), ("reading {v} or more", 0), ("no cooler than {v}", 0),
-                              ("with a temperature of at least {v}", 1), ("at {v} or warmer", 0),
-                              ("whose temperature is no lower than {v}", 1)),
-    ("temperature_c", "lt"): (("cooler than {v}", 0), ("colder than {v}", 0), ("with a temperature below {v}", 1),
-                              ("reading less than {v}", 0), ("whose temperature is under {v}", 1)),
-    ("temperature_c", "le"): (("no warmer than {v}", 0), ("no hotter than {v}", 0), ("at {v} or cooler", 0),
-                              ("with a temperature of at most {v}", 1), ("reading {v} or less", 0),
-                              ("whose temperature is no higher than {v}", 1)),
-    ("temperature_c", "approx"): (("at roughly {v}", 0), ("reading about {v}", 0),
-                                  ("with a temperature of around {v}", 1), ("whose temperature is close to {v}", 1),
-                                  ("at approximately {v}", 0)),
-    ("humidity_pct", "gt"): (("more humid than {v}", 0), ("with humidity above {v}", 1),
-                             ("whose humidity reads over {v}", 1)),
-    ("humidity_pct", "ge"): (("at least as humid as {v}", 0), ("with humidity of at least {v}", 1),
-                             ("reading {v} humidity or more", 0), ("whose humidity is no lower than {v}", 1)),
-    ("humidity_pct", "lt"): (("drier than {v}", 0), ("less humid than {v}", 0), ("with humidity below {v}", 1),
-                             ("whose humidity is under {v}", 1)),
-    ("humidity_pct", "le"): (("no more humid than {v}", 0), ("with humidity of at most {v}", 1),
-                             ("reading {v} humidity or less", 0), ("whose humidity is no higher than {v}", 1)),
-    ("humidity_pct", "approx"): (("with humidity around {v}", 1), ("whose humidity is roughly {v}", 1),
-                                 ("with a humidity reading of about {v}", 1)),
-    ("ndvi", "gt"): (("with an NDVI above {v}", 1), ("whose NDVI is greater than {v}", 1),
-                     ("with an NDVI reading over {v}", 1)),
-    ("ndvi", "ge"): (("with an NDVI of {v} or more", 1), ("whose NDVI is at least {v}", 1),
-                     ("with an NDVI no lower than {v}", 1)),
-    ("ndvi", "lt"): (("with an NDVI below {v}", 1), ("whose NDVI is less than {v}", 1),
-                     ("with an NDVI reading under {v}", 1)),
-    ("ndvi", "le"): (("with an NDVI of {v} or less", 1), ("whose NDVI is at most {v}", 1),
-                     ("with an NDVI no higher than {v}", 1)),
-    ("ndvi", "approx"): (("with an NDVI of about {v}", 1), ("whose NDVI is roughly {v}", 1),
-                         ("with an NDVI somewhere around {v}", 1)),
+_TEMP_UNITS = ((" °C", "c"), ("°C", "c"), (" degrees", "c"), (" deg", "c"), (" degrees C", "c"), (" C", "c"),
+               (" degrees Celsius", "c"))
+_HUM_UNITS = (("%", "%"), (" %", "%"), (" percent", "%"), (" per cent", "%"))
+
+
+def _number(rng, reading: str, value: float) -> tuple[str, float]:
+    """(the number as written, its value)."""
+    txt = _fmt_value(reading, value)
+    v = float(txt)
+    if reading == "ndvi":
+        if 0 < v < 1:
+            return _pick(rng, (txt, txt, txt[1:] if txt.startswith("0.") else txt, f"{v:.2f}")), v
+        return txt, v
+    if v == int(v):
+        u = rng.uniform()
+        if u < 0.22 and abs(v) < 100:
+            return number_words(int(v)), v
+        if u < 0.34:
+            return f"{v:.1f}", v
+        if v < 0 and u < 0.5:
+            return f"minus {txt[1:]}", v
+    return txt, v
+
+
+_TEMP_TAILS = {
+    "gt": ("that's warmer than {n}{u}", "running hotter than {n}{u}", "reading over {n}{u}", "at more than {n}{u}",
+           "with a temperature above {n}{u}", "that's above {n}{u}"),
+    "ge": ("at {n}{u} or more", "that's at least {n}{u}", "reading {n}{u} or higher", "that's no cooler than {n}{u}",
+           "with a temperature of at least {n}{u}", "at {n}{u} or warmer"),
+    "lt": ("that's colder than {n}{u}", "reading under {n}{u}", "at less than {n}{u}", "running cooler than {n}{u}",
+           "with a temperature below {n}{u}", "that's below {n}{u}"),
+    "le": ("at {n}{u} or less", "that's at most {n}{u}", "reading {n}{u} or lower", "that's no warmer than {n}{u}",
+           "with a temperature of at most {n}{u}", "at {n}{u} or colder"),
+    "approx": ("at about {n}{u}", "reading roughly {n}{u}", "that's around {n}{u}", "sitting at approximately {n}{u}",
+               "with a temperature of about {n}{u}", "at {n}{u}, give or take"),
 }
-_SUP_ADJ = {("temperature_c", "max"): ("hottest", "warmest"), ("temperature_c", "min"): ("coolest", "coldest"),
-            ("humidity_pct", "max"): ("most humid", "dampest"), ("humidity_pct", "min"): ("driest", "least humid"),
-            ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy",)}
-_SUP_TAIL = {
-    ("temperature_c", "max"): ("with the highest temperature reading", "that's reading the highest temperature",
-                               "with the highest temperature"),
-    ("temperature_c", "min"): ("with the lowest temperature reading", "that reads the lowest temperature",
-                               "with the lowest temperature"),
-    ("humidity_pct", "max"): ("with the highest humidity", "with the highest humidity reading"),
-    ("humidity_pct", "min"): ("with the lowest humidity", "that reads the lowest humidity"),
-    ("ndvi", "max"): ("with the highest NDVI", "whose NDVI is the highest"),
-    ("ndvi", "min"): ("with the lowest NDVI", "whose NDVI is the lowest"),
+_HUM_TAILS = {
+    "gt": ("that's more humid than {n}{u}", "with humidity above {n}{u}", "reading over {n}{u} humidity",
+           "at more than {n}{u} humidity"),
+    "ge": ("with humidity of at least {n}{u}", "at {n}{u} humidity or more", "that's no drier than {n}{u}",
+           "reading {n}{u} humidity or higher"),
+    "lt": ("that's drier than {n}{u}", "with humidity below {n}{u}", "reading under {n}{u} humidity",
+           "that's less humid than {n}{u}"),
+    "le": ("with humidity of {n}{u} or less", "at most {n}{u} humidity", "that's no more humid than {n}{u}",
+           "reading {n}{u} humidity or lower"),
+    "approx": ("at about {n}{u} humidity", "with humidity around {n}{u}", "reading roughly {n}{u} humidity",
+               "with humidity of approximately {n}{u}"),
+}
+_NDVI_TAILS = {
+    "gt": ("with an NDVI above {n}", "whose NDVI is over {n}", "with NDVI higher than {n}", "scoring more than {n} on NDVI"),
+    "ge": ("with an NDVI of {n} or more", "with NDVI at least {n}", "whose NDVI is no lower than {n}",
+           "scoring {n} or higher on NDVI"),
+    "lt": ("with an NDVI under {n}", "whose NDVI is below {n}", "with NDVI less than {n}", "scoring under {n} on NDVI"),
+    "le": ("with an NDVI of {n} or less", "with NDVI at most {n}", "whose NDVI is no higher than {n}",
+           "scoring {n} or lower on NDVI"),
+    "approx": ("with an NDVI of about {n}", "whose NDVI is roughly {n}", "with NDVI around {n}",
+               "scoring approximately {n} on NDVI"),
+}
+_SUPER_PREFIX = {
+    ("temperature_c", "max"): ("warmest", "hottest"),
+    ("temperature_c", "min"): ("coldest", "chilliest"),
+    ("ndvi", "max"): ("healthiest", "lushest"),
+    ("ndvi", "min"): ("least healthy", "sickliest"),
+    ("humidity_pct", "max"): ("most humid", "dampest"),
+    ("humidity_pct", "min"): ("driest", "least humid"),
+}
+_SUPER_TAIL = {
+    ("temperature_c", "max"): ("with the highest temperature", "that's running hottest", "reading the highest temperature"),
+    ("temperature_c", "min"): ("with the lowest temperature", "that's running coldest", "reading the lowest temperature"),
+    ("ndvi", "max"): ("with the highest NDVI", "with the best NDVI score", "whose NDVI is highest"),
+    ("ndvi", "min"): ("with the lowest NDVI", "with the worst NDVI score", "whose NDVI is lowest"),
+    ("humidity_pct", "max"): ("with the highest humidity", "reading the most humid", "whose humidity is highest"),
+    ("humidity_pct", "min"): ("with the lowest humidity", "reading the driest", "whose humidity is lowest"),
 }
 
 
 def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
     """(prefix before the noun or '', phrase after the noun or '', the constraint exactly as written).
 
-    Superlatives: a prefix adjective ('coolest', 'most humid') or a tail that reads after 'the one'
-    ('with the highest temperature reading'); thresholds: a tail that reads after the noun or after 'the one'
-    ('no warmer than 20 degrees', 'at least as humid as 60 percent', 'with an NDVI of .7 or more').
+    Superlatives: an adjective ('coldest', 'most humid', 'least healthy') or a tail ('with the lowest
+    humidity', 'that's running hottest'); thresholds: a tail that reads after the noun or after 'the one'
+    ('that's no warmer than 20 °C', 'at 45 percent humidity or more', 'with an NDVI of .35 or less',
+    'reading under minus eighteen degrees', 'at about 60%').
     """
     rd = c.reading
     if c.is_superlative:
         if rng.uniform() < 0.5:
-            return _pick(rng, _SUP_ADJ[(rd, c.comparator)]), "", c
-        return "", _pick(rng, _SUP_TAIL[(rd, c.comparator)]), c
-    vtxt = _fmt_value(rd, c.value)
-    template, named = _pick(rng, _CMP[(rd, c.comparator)])
-    amount, code = _amount(rng, rd, vtxt, need_unit=not named)
-    return "", template.format(v=amount), SensorConstraint(rd, c.comparator, float(vtxt), code)
+            return _pick(rng, _SUPER_PREFIX[(rd, c.comparator)]), "", c
+        return "", _pick(rng, _SUPER_TAIL[(rd, c.comparator)]), c
+    n, value = _number(rng, rd, c.value)
+    if rd == "ndvi":
+        return "", _pick(rng, _NDVI_TAILS[c.comparator]).format(n=n), SensorConstraint(rd, c.comparator, value, "")
+    if rd == "temperature_c":
+        pat = _pick(rng, _TEMP_TAILS[c.comparator])
+        if "temperature" in pat and rng.uniform() < 0.3:
+            u, code = "", ""
+        else:
+            u, code = _pick(rng, _TEMP_UNITS)
+        if n[0].isalpha() and u.startswith("°"):  # "twenty °C" reads oddly: words take a spelled unit
+            u = " degrees"
+        return "", pat.format(n=n, u=u), SensorConstraint(rd, c.comparator, value, code)
+    pat = _pick(rng, _HUM_TAILS[c.comparator])
+    if pat.startswith("with humidity") and rng.uniform() < 0.3:
+        u, code = "", ""
+    else:
+        u, code = _pick(rng, _HUM_UNITS)
+    if n[0].isalpha() and "%" in u:
+        u = " percent"
+    return "", pat.format(n=n, u=u), SensorConstraint(rd, c.comparator, value, code)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -170,303 +342,165 @@ def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tupl
 
 
 def hint_text_heldout(rng: np.random.Generator, x: str, y: str) -> str:
-    """A coordinate hint in the scene frame (metres), x then y, as a tester types it: every form starts with
-    'at', 'around' or 'located' and reads after a noun or after 'the one'."""
-    xw, yw = _words(x), _words(y)
-    forms = [f"at ({x}, {y})", f"at x = {x}, y = {y}", f"at x={x} m, y={y} m", f"around the point ({x}, {y})",
-             f"at position [{x}, {y}]", f"located at x {x} and y {y}", f"at (x, y) = ({x}, {y})",
-             f"at roughly x = {x}, y = {y}"]
-    if xw and yw:
-        forms.append(f"at x {xw}, y {yw}")
-    return _pick(rng, forms)
+    """A coordinate hint in the scene frame (metres), x then y, as typed on a phone: '(3.5, 2)', 'at x 3.5 y
+    2', 'at x=3.5, y=2', 'around 3.5/2', 'at [3.5, 2]', 'at x: 3.5, y: 2', 'at position 3.5, 2'. Every form
+    reads straight after a noun.
+    """
+    return _pick(rng, (
+        f"({x}, {y})", f"at ({x}, {y})", f"at x {x} y {y}", f"at x={x}, y={y}", f"around {x}/{y}",
+        f"at [{x}, {y}]", f"at x: {x}, y: {y}", f"at position {x}, {y}", f"at roughly ({x}, {y})",
+        f"around x {x}, y {y}", f"at coords {x},{y}", f"at ({x} m, {y} m)",
+    ))
 
 
 # ----------------------------------------------------------------------------------------------------
-# Goals
+# Whole instructions
+
+_VERBS = ("go to", "head to", "check on", "have a look at", "pop over to", "swing by", "stop at", "visit",
+          "go and look at", "find", "get over to", "look in on")
+_TEEN_VERBS = ("go to", "go check", "check", "swing by", "go see", "find", "head to")
+_WORDY_VERBS = ("go to", "visit", "look in on", "pop along to", "have a look at", "call in at", "make your way to")
 
 
-def _split_attrs(t: Target) -> tuple[list[str], list[str]]:
-    """(modifiers written before the noun, states) — the phrase holds the modifiers, never the states."""
-    before = t.phrase[: len(t.phrase) - len(t.head)].split() if t.phrase.endswith(t.head) else t.phrase.split()
-    mods, states = [], []
-    for a in t.attributes:
-        words = a.split()
-        hit = any(before[i:i + len(words)] == words for i in range(len(before) - len(words) + 1))
-        (mods if hit else states).append(a)
-    return mods, states
-
-
-_PREP = {
-    "near": ("near", "close to", "not far from"),
-    "next_to": ("next to", "right next to", "alongside"),
-    "beside": ("beside", "right beside"),
-    "by": ("by", "over by", "just by"),
-    "on": ("on", "on top of", "sitting on"),
-    "under": ("under", "underneath", "beneath"),
-    "above": ("above", "directly above"),
-    "in": ("in", "inside"),
-    "with": ("with",),
-    "in_room_with": ("in the same room as", "in the room with", "sharing a room with"),
-    "in_front_of": ("in front of", "right in front of"),
-    "behind": ("behind", "tucked behind"),
-    "opposite": ("opposite", "across from", "facing"),
-    "left_of": ("to the left of",),
-    "right_of": ("to the right of",),
-}
-
-
-def _state_pred(rng, state: str) -> str:
-    """'is switched on', "has been left open"."""
-    if state in ("switched on", "switched off", "open") and rng.uniform() < 0.35:
-        return f"has been left {state}"
-    return f"is {state}"
-
-
-def _rel_pred(rng, rtype: str, anchor_text: str) -> str:
-    """A relation as a verb phrase: 'is next to the sofa', 'has the monitor'."""
-    if rtype == "with":
-        return f"has {anchor_text}"
-    return f"is {_pick(rng, _PREP[rtype])} {anchor_text}"
-
-
-def _that(preds: list[str], rng) -> str:
-    """'that's switched on and is next to the sofa' from ['is switched on', 'is next to the sofa']."""
-    first = preds[0]
-    if first.startswith("is ") and rng.uniform() < 0.6:
-        first = "that's " + first[3:]
-    else:
-        first = "that " + first
-    return " and ".join([first, *preds[1:]])
-
-
-def _has_clause(t: Target) -> bool:
-    return bool(_split_attrs(t)[1] or t.relations)
-
-
-def _anchor(rng, t: Target) -> str:
-    """An anchor noun phrase; its states and own relations in a 'that ...' clause (clause-bearing anchor last)."""
-    _, states = _split_attrs(t)
-    preds = [_state_pred(rng, s) for s in states]
-    rels = sorted(t.relations, key=lambda r: _has_clause(r.anchor))
-    preds += [_rel_pred(rng, r.type, _anchor(rng, r.anchor)) for r in rels]
-    return f"the {t.phrase}" + (" " + _that(preds, rng) if preds else "")
-
-
-def _relations(rng, t: Target, head: str, lead: str) -> str:
-    """The goal's relations after the rest of it; lead: '' (bare prepositions follow) or 'one' (after 'the
-    one'). Plain anchors first; after a clause-bearing anchor the goal is named again."""
-    rels = sorted(t.relations, key=lambda r: _has_clause(r.anchor))
-    out, restart = [], False
-    for i, r in enumerate(rels):
-        a = _anchor(rng, r.anchor)
-        prep = "with" if r.type == "with" else _pick(rng, _PREP[r.type])
-        if restart:
-            out.append(f", and that same {head} is also {prep} {a}" if r.type != "with"
-                       else f", and that same {head} also has {a}")
-        else:
-            out.append((" and " if i else " ") + f"{prep} {a}")
-        restart = restart or _has_clause(r.anchor)
-    return "".join(out)
-
-
-def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "",
-                         hint: str = "") -> str:
-    """'the small grey fabric sofa', 'the kettle — the copper one — in the kitchen', 'the lamp that's been
-    left switched on (in the study)', 'the heater in the pantry, the one no warmer than 20 degrees', 'whichever
-    lamp in the study is the coolest', 'the one with the highest NDVI out of every fern in the sunroom', 'the
-    guitar at (3.5, 2)', 'the lamp next to the table that has the monitor'."""
-    t = sg.target
-    mods, states = _split_attrs(t)
-    sup = any(c.is_superlative for c in sg.sensors)
-    room = f"in the {sg.room}" if sg.room else ""
-
-    # Superlative by a tail, scoped over everything else: "the one with ... out of every lamp in the study".
-    if sup and tail and not prefix and (t.relations or hint or states or rng.uniform() < 0.5):
-        rest = [room] if room else []
-        if hint:
-            rest.append(hint)
-        body = f"the one {tail} out of every {t.phrase}"
-        if states:
-            body += " " + _that([_state_pred(rng, s) for s in states], rng)
-            rest = [f"and is {x}" for x in rest]
-        body += "".join(" " + x for x in rest)
-        return body + _relations(rng, t, t.head, "")
-    # Superlative by an adjective over the head and room: "whichever lamp in the study is the coolest".
-    if prefix and sup and room and not (t.relations or hint or states or tail) and rng.uniform() < 0.45:
-        return f"whichever {t.phrase} {room} is {_pick(rng, ('the ', ''))}{prefix}"
-
-    # The noun phrase.
-    appos = ""
-    one_word = [s for s in states if s in ("open", "closed", "empty", "full")]
-    pre_state = ""
-    if one_word and not prefix and rng.uniform() < 0.35:
-        pre_state = one_word[0]
-        states = [s for s in states if s != pre_state]
-    if mods and not prefix and not pre_state and rng.uniform() < 0.3:
-        head_np = f"the {t.head}"
-        if len(mods) == 1 and " " not in mods[0] and rng.uniform() < 0.5:
-            appos = f", which is {mods[0]},"
-        else:
-            appos = f" — the {' '.join(mods)} one —"
-    else:
-        head_np = "the " + " ".join(x for x in (prefix, pre_state, t.phrase) if x)
-    text = head_np + appos
-
-    # What follows the noun: one thing directly, the rest in a 'the one ...' apposition, relations last.
-    direct, extras, kind = "", [], ""
-    if states:
-        preds = [_state_pred(rng, s) for s in states]
-        if not t.relations and not appos.startswith(" —") and (appos.endswith(",") or rng.uniform() < 0.3):
-            if appos.endswith(","):
-                text, direct = text[:-1], " and " + " and ".join(preds) + ","
-            else:
-                direct = ", which " + " and ".join(preds) + ","
-            kind = "which"
-        else:
-            direct, kind = " " + _that(preds, rng), "that"
-        if room:
-            extras.append(room)
-    elif room:
-        style = rng.uniform()
-        paren = not appos and ((tail and style < 0.35) or style >= 0.8)
-        direct, kind = (f" ({room})", "room") if paren else (f" {room}", "room")
-    if tail:
-        if not direct:
-            direct, kind = f" {tail}", "tail"
-        else:
-            extras.append(tail)
-    if hint:
-        if not direct:
-            direct, kind = f" {hint}", "tail"
-        else:
-            extras.append(hint)
-    text += direct
-    if extras:
-        if text.endswith(","):
-            text = text[:-1]
-        text += ", the one " + " and ".join(extras)
-        text += " and" if t.relations else ","  # the apposition is closed before whatever follows the goal
-    elif t.relations and kind == "tail":
-        text += " and"
-    elif t.relations and kind == "that":
-        text += " and is"
-    if text.endswith(" —") and not t.relations:  # an apposition closing at the very end: commas instead
-        text = text[: -len(" —")].replace(" — the ", ", the ", 1) + ","
-    rels = _relations(rng, t, t.head, "")
-    if rels and text.endswith(" and is") and rels.lstrip().startswith("with "):
-        return text[: -len(" is")] + " has " + rels.lstrip()[len("with "):]
-    return text + rels
-
-
-# ----------------------------------------------------------------------------------------------------
-# Instructions
-
-_VERBS = ("head for", "make for", "go and have a look at", "swing round to", "pay a visit to", "go over to",
-          "take a look at", "drop by", "track down", "find your way to", "go and find", "get yourself over to")
-_GERUND = {"head for": "heading for", "make for": "making for", "go and have a look at": "having a look at",
-           "swing round to": "swinging round to", "pay a visit to": "paying a visit to", "go over to": "going over to",
-           "take a look at": "taking a look at", "drop by": "dropping by", "track down": "tracking down",
-           "find your way to": "finding your way to", "go and find": "finding",
-           "get yourself over to": "getting yourself over to"}
-_ORDINAL = ("first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth")
-
-
-def _short(goal: str) -> bool:
-    return len(goal.split()) <= 4 and not any(ch in goal for ch in ",—()")
-
-
-def _visit(rng, goal: str) -> str:
-    """A verb and the goal: 'head for the lamp', 'pay the lamp a visit' (short goals only)."""
-    if _short(goal) and rng.uniform() < 0.2:
-        return f"pay {goal} a visit"
-    return f"{_pick(rng, _VERBS)} {goal}"
-
-
-def _end(goal: str) -> str:
-    return goal[:-1] if goal.endswith(",") else goal
-
-
-def _sentence(s: str) -> str:
-    s = s.strip().rstrip(",")
-    for a, b in ((",,", ","), (", ,", ","), (",.", "."), (",;", ";"), (",:", ":"), (",?", "?"), (", —", " —")):
-        s = s.replace(a, b)
+def _finish(s: str, cap: bool = True) -> str:
+    s = s.strip().replace(" ,", ",").replace(",,", ",").replace(",.", ".").replace(",?", "?").replace(",;", ";")
     if not s.endswith((".", "?", "!")):
-        s += "?" if s.lower().startswith(("could you", "would you", "can you")) else "."
-    return s[0].upper() + s[1:]
+        s += "."
+    return s[0].upper() + s[1:] if cap else s
 
 
-def _lst(rng, res: list[str], verbs: bool = False) -> str:
-    """'A, B and C', or with semicolons when a goal holds a comma or a dash."""
-    items = [_visit(rng, r) if verbs else r for r in res]
-    if len(items) == 1:
-        return _end(items[0])
-    heavy = any(ch in r for r in res for ch in ",—(")
-    if heavy:
-        return "; ".join(_end(i) for i in items[:-1]) + "; and " + _end(items[-1])
-    return ", ".join(items[:-1]) + _pick(rng, (" and ", ", and ")) + items[-1]
+def _risky(res: list[str]) -> bool:
+    """Goals whose text would blur a plain comma / 'and' list: inner commas, 'and', brackets, clauses, anchors."""
+    return any(("," in r or " and " in r or " with " in r or "(" in r or " that" in r or " which" in r
+                or len(r.split()) > 5) for r in res)
+
+
+def _short(r: str) -> bool:
+    """A goal plain enough to take 'first' / 'last' after it without the word reading as part of it."""
+    return len(r.split()) <= 4 and not any(ch.isdigit() for ch in r) and "(" not in r and " that" not in r
+
+
+def _lower_start(s: str) -> str:
+    return s if s.startswith("I ") else s[0].lower() + s[1:]
+
+
+def _parent(rng, res: list[str], order: str) -> str:
+    v = _pick(rng, ("", "", "check ", "go to ", "visit "))
+    n = len(res)
+    if n == 1:
+        return _finish(f"{v}{res[0]}" + _pick(rng, ("", "", ". Asap", ". Quick please", " please")))
+    if order == "strict":
+        k = int(rng.integers(4))
+        if k == 0:
+            if _short(res[0]):
+                return _finish(f"{v}{res[0]} first" + "".join(f", then {r}" for r in res[1:])) + " In that order."
+            return _finish(f"first {v}{res[0]}" + "".join(f", then {r}" for r in res[1:])) + " In that order."
+        if k == 1:
+            return _finish(" → ".join(res)) + _pick(rng, (" In that order.", " Strictly in that order."))
+        if k == 2:
+            mid = "".join(f", then {r}" for r in res[1:-1])
+            end = f", {res[-1]} last" if _short(res[-1]) else f", and last of all {res[-1]}"
+            return _finish(f"first {v}{res[0]}{mid}{end}")
+        return _finish(f"{v}{res[0]}" + "".join(f", after that {r}" for r in res[1:])) + " Keep to that order."
+    if _risky(res):
+        return _finish("; ".join(res)) + _pick(rng, (" Any order.", " Order doesn't matter.", " Whatever order."))
+    lst = ", ".join(res[:-1]) + " and " + res[-1]
+    return _finish(f"{v}{lst}") + _pick(rng, (" Any order.", " Order doesn't matter.", " Whatever order is quickest."))
+
+
+def _teen(rng, res: list[str], order: str) -> str:
+    v = _pick(rng, _TEEN_VERBS)
+    please = _pick(rng, (" plz", " pls", " rn", " rn plz", ""))
+    n = len(res)
+    if n == 1:
+        s = _pick(rng, (f"{v} {res[0]}{please}", f"can u {v} {res[0]}{please}", f"yo {v} {res[0]}{please}"))
+        return s.lower().rstrip(",")
+    if order == "strict":
+        k = int(rng.integers(4))
+        if k == 0:
+            if _risky(res):
+                s = f"first {v} {res[0]}" + "".join(f". then {r}" for r in res[1:]) + please
+            elif _short(res[0]):
+                s = f"{v} {res[0]} first" + "".join(f" then {r}" for r in res[1:]) + please
+            else:
+                s = f"first {v} {res[0]}" + "".join(f" then {r}" for r in res[1:]) + please
+        elif k == 1:
+            s = f"can u {v} {res[0]}{please}. after that {res[1]}" + "".join(f". then {r}" for r in res[2:])
+            s += ". in that order"
+        elif k == 2 and n == 2:
+            s = f"{v} {res[1]}{please}. but before that {_pick(rng, _TEEN_VERBS)} {res[0]}"
+        else:
+            s = f"first {res[0]}. then {res[1]}" + "".join(f". then {r}" for r in res[2:]) + f". that order{please}"
+        return s.lower()
+    free = _pick(rng, ("any order is fine", "idc what order", "order doesnt matter", "whatever order u want"))
+    if n == 2 and rng.uniform() < 0.4:
+        free = _pick(rng, ("idc which one first", "doesnt matter which first"))
+    if _risky(res):
+        s = f"{v} {res[0]}. also {res[1]}" + "".join(f". also {r}" for r in res[2:]) + f"{please}. {free}"
+    else:
+        s = f"{v} {', '.join(res[:-1])} and {res[-1]}{please}, {free}"
+    return s.lower()
+
+
+def _wordy(rng, res: list[str], order: str) -> str:
+    v = _pick(rng, _WORDY_VERBS)
+    open_ = _pick(rng, ("Would you be so kind as to", "Would you be a dear and", "I wonder if you could",
+                        "Could you possibly"))
+    thanks = _pick(rng, (" Thank you ever so much.", " Many thanks.", " Thank you, dear.", ""))
+    n = len(res)
+    if n == 1:
+        return _finish(f"{open_} {v} {res[0]}?") + thanks
+    if order == "strict":
+        k = int(rng.integers(3))
+        if k == 0:
+            if n == 2:
+                s = f"{open_} first {v} {res[0]}, and once you have done that, {res[1]}"
+            else:
+                s = f"{open_} first {v} {res[0]}; once you have done that, {res[1]}"
+                s += "".join(f"; after that, {r}" for r in res[2:-1]) + f"; and to finish, {res[-1]}"
+            return _finish(s + "?") + thanks
+        if k == 1:
+            sep = "; " if _risky(res) else ", "
+            s = f"To begin with, {_lower_start(open_)} {v} {res[0]}" + "".join(f"{sep}then {r}" for r in res[1:-1])
+            s += f"{sep}and, at the very end, {res[-1]}" if n > 2 else f"{sep}and after that {res[-1]}"
+            return _finish(s + "?") + " Please keep to that order." + thanks
+        steps = [f"To start with, {_lower_start(open_)} {v} {res[0]}?"]
+        steps += [f"After that, please {_pick(rng, _WORDY_VERBS)} {r}." for r in res[1:-1]]
+        steps += [f"And lastly, {_pick(rng, _WORDY_VERBS)} {res[-1]}."]
+        return " ".join(_finish(x) for x in steps) + thanks
+    free = _pick(rng, ("I'm not fussy about the order.", "The order makes no difference to me.",
+                       "Do them in whichever order suits you.", "Any order will do."))
+    if n == 2:
+        s = f"{open_} {v} {res[0]}, and also {res[1]}" if _risky(res) else f"{open_} {v} {res[0]} and {res[1]}"
+    elif _risky(res):
+        s = f"{open_} {v} {res[0]}" + "".join(f"; and {r}" if i == n - 2 else f"; {r}" for i, r in enumerate(res[1:]))
+    else:
+        s = f"{open_} {v} {_and(res)}"
+    return _finish(s + "?") + " " + free + thanks
+
+
+def _tidy(rng, res: list[str], order: str) -> str:
+    n = len(res)
+    if n == 1:
+        return _finish(_pick(rng, (f"Task: {res[0]}", f"One stop: {res[0]}", f"Please {_pick(rng, _VERBS)} {res[0]}")))
+    if order == "strict":
+        k = int(rng.integers(3))
+        if k == 0:
+            return _finish("In this order: " + "; ".join(f"{i + 1}) {r}" for i, r in enumerate(res)))
+        if k == 1:
+            return _finish("; ".join(f"Step {i + 1}: {r}" for i, r in enumerate(res)))
+        return _finish(f"Route, in order: {res[0]}; " + "; ".join(f"then {r}" for r in res[1:]))
+    head = _pick(rng, ("To visit (any order): ", "Stops, order not important: ", "Please cover these, in any order: ",
+                       "Checklist (order up to you): "))
+    return _finish(head + "; ".join(res))
 
 
 def render_instruction_heldout(rng: np.random.Generator, res: list[str], order: str) -> str:
-    """A whole instruction over rendered goals, as a careful tester writes it: strict texts spell the visiting
-    order out ('before anything else', 'and only after that', 'leave X until last', numbered steps); free
-    ones say the order is open ('any order's fine', 'I don't mind which you do first')."""
-    n = len(res)
-    polite = _pick(rng, ("", "", "", "please ", "would you ", "could you "))
-    if n == 1:
-        k = int(rng.integers(3))
-        if k == 0:
-            return _sentence(f"{polite}{_visit(rng, _end(res[0]))}")
-        if k == 1:
-            return _sentence(f"I'd like you to {_visit(rng, res[0])}, please")
-        return _sentence(f"just the one stop this time: {_visit(rng, _end(res[0]))}")
-    if order == "free":
-        k = int(rng.integers(6))
-        which = "which you do first" if n == 2 else "what order you take them in"
-        if k == 0:
-            return _sentence(f"{polite}{_pick(rng, _VERBS)} {_lst(rng, res)} — any order's fine")
-        if k == 1:
-            return _sentence(f"I need you to {_lst(rng, res, verbs=True)}. I don't mind {which}")
-        if k == 2:
-            return _sentence(f"{_pick(rng, _VERBS)} these in whatever order suits you: {_lst(rng, res)}")
-        if k == 3:
-            return _sentence(f"there's no set order for this one: {_lst(rng, res, verbs=True)}")
-        if k == 4:
-            return _sentence(f"{polite}{_pick(rng, _VERBS)} each of the following, in any sequence you like: "
-                             f"{_lst(rng, res)}")
-        return " ".join([_sentence(f"{_pick(rng, _VERBS)} {_lst(rng, res)}"),
-                         _sentence(_pick(rng, ("the order is entirely up to you", "sequence them however you like",
-                                               "you pick the order")))])
-    k = int(rng.integers(6))
-    if k == 0:  # before anything else ... then ... leave Z until last
-        out = [_sentence(f"before anything else, {_visit(rng, _end(res[0]))}")]
-        for r in res[1:-1]:
-            out.append(_sentence(f"{_pick(rng, ('then', 'after that,', 'next,'))} {_visit(rng, _end(r))}"))
-        last = res[-1]
-        out.append(_sentence(_pick(rng, (f"leave {last} until last", f"save {last} for the end",
-                                         f"finally, {_visit(rng, last)}"))))
-        return " ".join(out)
-    if k == 1:  # A, and only after that B
-        s = f"{polite}{_visit(rng, res[0])}"
-        for r in res[1:]:
-            s += f", and only {_pick(rng, ('after that', 'after that', 'then'))} {_visit(rng, r)}"
-        return _sentence(s)
-    if k == 2:  # numbered steps
-        steps = "; ".join(f"({i + 1}) {_visit(rng, _end(r))}" for i, r in enumerate(res))
-        return _sentence(f"{_pick(rng, ('please do these in exactly this order', 'in this order, one after the other'))}: {steps}")
-    if k == 3:  # start by ...ing A. Once that's done, B. Finish up at Z.
-        v = _pick(rng, _VERBS)
-        out = [_sentence(f"start by {_GERUND[v]} {_end(res[0])}")]
-        for r in res[1:-1]:
-            out.append(_sentence(f"once that's done, {_visit(rng, _end(r))}"))
-        out.append(_sentence(f"finish up by {_GERUND[_pick(rng, _VERBS)]} {_end(res[-1])}"))
-        return " ".join(out)
-    if k == 4:  # your first stop ..., your second ..., and your last ...
-        parts = [f"your {_ORDINAL[i]} stop is {_end(r)}" for i, r in enumerate(res[:-1])]
-        parts.append(f"your last stop is {_end(res[-1])}")
-        return " ".join(_sentence(p) for p in parts)
-    # To begin with, A; when you're done there, B; ... Z comes last.
-    s = f"to begin with, {_visit(rng, res[0])}"
-    for r in res[1:-1]:
-        s += f"; when you're done there, {_visit(rng, _end(r))}"
-    s += f"; {res[-1]} comes last"
-    return _sentence(s)
+    """A whole instruction over rendered goals, typed into the app by one of four household members (a rushed
+    parent, a teenager, an older relative, a tidy list-maker). Strict texts spell the visiting order out
+    ('first ... then ...', 'A → B → C. In that order.', 'B. but before that A', numbered steps, 'and to
+    finish, ...'); free ones say it is open ('any order', 'idc what order', 'I'm not fussy about the order').
+    """
+    res = [r.strip().rstrip(",") for r in res]
+    who = int(rng.integers(4))
+    return (_parent, _teen, _wordy, _tidy)[who](rng, res, order)
