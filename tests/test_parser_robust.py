@@ -519,3 +519,13 @@ def test_a_choice_between_objects_is_a_clear_error(text):
         parse_instruction(text)
     chain = parse_instruction("Go to the kettle with the toaster either on it or beside it.")
     assert [sg.target.head for sg in chain.subgoals] == ["kettle"]
+
+
+@pytest.mark.parametrize("text,head,rel", [("Go to the one in front of the sofa, then the lamp.", "one", "in_front_of"),
+                                           ("Go to the box for maintenance tools.", "box for maintenance tools", None)])
+def test_later_rounds_leave_ordinary_phrases_alone(text, head, rel):
+    """'the one in front of X' is not a superlative's scope, and 'for maintenance' inside a noun phrase is no
+    purpose remark."""
+    sg = parse_instruction(text).subgoals[0]
+    assert sg.target.head == head
+    assert [r.type for r in sg.target.relations] == ([rel] if rel else [])

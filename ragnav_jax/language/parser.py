@@ -435,7 +435,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"|as\s+part\s+of)\b[^,;.()⟪]*", " "),
     (r"\((?:for|this|no|as|purely|just)\b[^()]*\)", " "),
     (r",?\s*\bfor\s+(?:inspection|checking|maintenance|safety|a\s+(?:check|look|visual\s+check|routine\s+inspection))"
-     r"(?:\s+purposes)?\b", " "),
+     r"(?:\s+purposes)?(?=\s*(?:[,;.!?)]|$))", " "),
     (r"\bnormali[sz]ed\s+difference\s+vegetation\s+index\s*(?:\(\s*ndvi\s*\))?", "ndvi"),
     # The robot as the subject of a formal request: "the robot should first proceed to", "it is requested that
     # the robot visit", "it is to examine", "X is to be inspected".
@@ -484,9 +484,11 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\b(?:save|leave|keep)\s+(?P<np>the\s+(?:[^.;()⟪]|\.(?=\d))+?),?\s+(?:for|until|till|to)\s+(?:the\s+)?(?:very\s+)?(?:end|last|finish)\b",
      r"finally visit \g<np>"),
     # "the one with the lowest reading out of every lamp in the den": the lamp with the lowest reading in the den.
-    (r"\bthe\s+one\s+(?P<mid>[^,;.()⟪]*?)\s+(?:out\s+of|of|among)\s+(?P<q>every|each|all(?:\s+the)?|the)\s+"
+    (r"\bthe\s+one\s+(?P<mid>[^,;.()⟪]*?)\s+(?:(?:out\s+of|among|amongst)\s+(?P<q>every|each|all(?:\s+the)?|the)"
+     r"|of\s+(?P<q2>every|each|all(?:\s+the)?))\s+"
      r"(?P<np>(?:[a-z'-]+\s+){0,2}?[a-z'-]+?)(?=\s+(?:in|inside|on|at|near|by|over|down)\b|\s*[,;.!?]|\s+-\s|\s*$)",
-     lambda m: f"the {m.group('np') if m.group('q') in ('every', 'each') else _singular(m.group('np'))} {m.group('mid')}"),
+     lambda m: f"the {m.group('np') if (m.group('q') or m.group('q2')) in ('every', 'each') else _singular(m.group('np'))} "
+               f"{m.group('mid')}"),
     # "the nearest lamp to the sofa" is the lamp nearest to the sofa; "the nearest lamp" (to the robot) names
     # a lamp: which one is left to retrieval and planning (the chain has no distance-to-robot constraint).
     (r"\bthe\s+(?:nearest|closest)\s+(?P<np>[a-z][\w'-]*(?:\s+[a-z][\w'-]*){0,2}?)\s+to\s+(?=(?:the|a|an|my|your)\b)",
