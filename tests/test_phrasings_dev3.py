@@ -4,10 +4,12 @@ strict/free wording told apart, clean punctuation."""
 
 import re
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from phrasing_fixtures import SENSORS as _sensors
+from phrasing_fixtures import gen
+from phrasing_fixtures import phrases as _phrases
 
 from ragnav_jax.language.phrasings import STATE_VALUES
 from ragnav_jax.language.phrasings_dev3 import (
@@ -25,10 +27,6 @@ ROOMS = ("kitchen", "living room", "games room", "pantry")
 
 def T(head, attrs=(), rels=()):
     return Target(" ".join(a for a in (*attrs, head)), head, tuple(attrs), tuple(Relation(t, a) for t, a in rels))
-
-
-def gen(seed):
-    return np.random.default_rng(seed)
 
 
 def _word(w):
@@ -325,25 +323,7 @@ _targets = st.recursive(
                             st.lists(st.tuples(st.sampled_from(RELATION_TYPES), inner), max_size=2)),
     max_leaves=4,
 )
-_sensors = st.one_of(
-    st.none(),
-    st.builds(SensorConstraint, st.sampled_from(("temperature_c", "ndvi", "humidity_pct")),
-              st.sampled_from(("max", "min"))),
-    st.builds(SensorConstraint, st.just("temperature_c"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-30, 950).map(float)),
-    st.builds(SensorConstraint, st.just("humidity_pct"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(0, 100).map(float)),
-    st.builds(SensorConstraint, st.just("ndvi"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-5, 20).map(lambda k: k * 0.05)),
-)
 _goals = st.tuples(_targets, st.one_of(st.none(), st.sampled_from(ROOMS)), _sensors, st.booleans())
-
-
-def _phrases(t):
-    yield t.head
-    yield from t.attributes
-    for r in t.relations:
-        yield from _phrases(r.anchor)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

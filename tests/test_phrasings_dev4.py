@@ -5,10 +5,12 @@ stop, all lower case)."""
 
 import re
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from phrasing_fixtures import SENSORS as _sensors
+from phrasing_fixtures import STATES, T, gen
+from phrasing_fixtures import phrases as _phrases
 
 from ragnav_jax.language.phrasings_dev4 import (
     hint_text_dev4,
@@ -16,22 +18,11 @@ from ragnav_jax.language.phrasings_dev4 import (
     render_instruction_dev4,
     render_sensor_dev4,
 )
-from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import RELATION_TYPES, SensorConstraint, Subgoal
 
 HEADS = ("lamp", "sofa", "kettle", "fern", "coffee machine", "hi-fi speaker", "heater", "drums", "night-light")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal")
-STATES = ("switched on", "switched off", "open", "closed", "empty", "full")
 ROOMS = ("kitchen", "living room", "games room", "pantry")
-
-
-def T(head, attrs=(), rels=()):
-    """A target as the generator builds it: the phrase holds the modifiers, never the states."""
-    return Target(" ".join(a for a in (*attrs, head) if a not in STATES), head, tuple(attrs),
-                  tuple(Relation(t, a) for t, a in rels))
-
-
-def gen(seed):
-    return np.random.default_rng(seed)
 
 
 def _word(w):
@@ -348,25 +339,7 @@ _targets = st.recursive(
                             st.lists(st.tuples(st.sampled_from(RELATION_TYPES), inner), max_size=2)),
     max_leaves=4,
 )
-_sensors = st.one_of(
-    st.none(),
-    st.builds(SensorConstraint, st.sampled_from(("temperature_c", "ndvi", "humidity_pct")),
-              st.sampled_from(("max", "min"))),
-    st.builds(SensorConstraint, st.just("temperature_c"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-30, 950).map(float)),
-    st.builds(SensorConstraint, st.just("humidity_pct"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(0, 100).map(float)),
-    st.builds(SensorConstraint, st.just("ndvi"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-5, 20).map(lambda k: k * 0.05)),
-)
 _goals = st.tuples(_targets, st.one_of(st.none(), st.sampled_from(ROOMS)), _sensors, st.booleans())
-
-
-def _phrases(t):
-    yield t.head
-    yield from t.attributes
-    for r in t.relations:
-        yield from _phrases(r.anchor)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

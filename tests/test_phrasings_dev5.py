@@ -5,10 +5,12 @@ told apart; the two styles (lower-case transcript without punctuation, capitalis
 
 import re
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from phrasing_fixtures import SENSORS as _sensors
+from phrasing_fixtures import STATES, T, gen, target_strategy
+from phrasing_fixtures import phrases as _phrases
 
 from ragnav_jax.language.phrasings_dev5 import (
     hint_text_dev5,
@@ -16,23 +18,12 @@ from ragnav_jax.language.phrasings_dev5 import (
     render_instruction_dev5,
     render_sensor_dev5,
 )
-from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import RELATION_TYPES, SensorConstraint, Subgoal
 
 HEADS = ("lamp", "sofa", "amplifier", "snake plant", "coffee machine", "hi-fi speaker", "heater", "drums",
          "night-light", "ping-pong table")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal", "lacquered")
-STATES = ("switched on", "switched off", "open", "closed", "empty", "full")
 ROOMS = ("kitchen", "living room", "games room", "pantry", "laundry room")
-
-
-def T(head, attrs=(), rels=()):
-    """A target as the generator builds it: the phrase holds the modifiers, never the states."""
-    return Target(" ".join(a for a in (*attrs, head) if a not in STATES), head, tuple(attrs),
-                  tuple(Relation(t, a) for t, a in rels))
-
-
-def gen(seed):
-    return np.random.default_rng(seed)
 
 
 def _word(w):
@@ -403,34 +394,7 @@ def test_busy_goals_are_listed_with_their_own_verbs():
             assert not re.search(r"(sofa|fifty|pantry),? and the rug", low), low
 
 
-def _target_strategy():
-    leaf = st.builds(T, st.sampled_from(HEADS), st.lists(st.sampled_from(MODS + STATES), max_size=2, unique=True))
-    anchor = st.one_of(leaf, st.builds(T, st.sampled_from(HEADS), st.lists(st.sampled_from(MODS), max_size=1),
-                                       st.lists(st.tuples(st.sampled_from(RELATION_TYPES), leaf), min_size=1,
-                                                max_size=1)))
-    return st.builds(T, st.sampled_from(HEADS), st.lists(st.sampled_from(MODS + STATES), max_size=3, unique=True),
-                     st.lists(st.tuples(st.sampled_from(RELATION_TYPES), anchor), max_size=2))
-
-
-_sensors = st.one_of(
-    st.none(),
-    st.builds(SensorConstraint, st.sampled_from(("temperature_c", "ndvi", "humidity_pct")),
-              st.sampled_from(("max", "min"))),
-    st.builds(SensorConstraint, st.just("temperature_c"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-30, 950).map(float)),
-    st.builds(SensorConstraint, st.just("humidity_pct"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(0, 100).map(float)),
-    st.builds(SensorConstraint, st.just("ndvi"), st.sampled_from(("gt", "ge", "lt", "le", "approx")),
-              st.integers(-5, 20).map(lambda k: k * 0.05)),
-)
-_goals = st.tuples(_target_strategy(), st.one_of(st.none(), st.sampled_from(ROOMS)), _sensors, st.booleans())
-
-
-def _phrases(t):
-    yield t.head
-    yield from t.attributes
-    for r in t.relations:
-        yield from _phrases(r.anchor)
+_goals = st.tuples(target_strategy(HEADS, MODS), st.one_of(st.none(), st.sampled_from(ROOMS)), _sensors, st.booleans())
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -5,10 +5,10 @@ told apart; the split end to end on a small unseen house."""
 
 import re
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from phrasing_fixtures import STATES, T, gen
 
 from ragnav_jax.language.phrasings_dev7 import (
     hint_text_dev7,
@@ -16,23 +16,12 @@ from ragnav_jax.language.phrasings_dev7 import (
     render_instruction_dev7,
     render_sensor_dev7,
 )
-from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import RELATION_TYPES, SensorConstraint, Subgoal
 
 HEADS = ("lamp", "sofa", "amplifier", "snake plant", "coffee machine", "hi-fi speaker", "heater", "night-light",
          "ping-pong table", "chest freezer")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal", "lacquered", "small")
-STATES = ("switched on", "switched off", "open", "closed", "empty", "full")
 ROOMS = ("kitchen", "living room", "games room", "pantry", "laundry room", "study")
-
-
-def T(head, attrs=(), rels=()):
-    """A target as the generator builds it: the phrase holds the modifiers, never the states."""
-    return Target(" ".join(a for a in (*attrs, head) if a not in STATES), head, tuple(attrs),
-                  tuple(Relation(t, a) for t, a in rels))
-
-
-def gen(seed):
-    return np.random.default_rng(seed)
 
 
 def _word(w):
@@ -275,7 +264,7 @@ def test_goal_text_survives_in_the_instruction():
             assert ",," not in text and ",." not in text and " ," not in text
 
 
-def _target_strategy():
+def target_strategy(HEADS, MODS):
     leaf = st.builds(lambda h, a: T(h, a), st.sampled_from(HEADS),
                      st.lists(st.sampled_from(MODS + STATES), max_size=2, unique=True).map(tuple))
     return st.builds(lambda h, a, rels: T(h, a, rels), st.sampled_from(HEADS),
@@ -291,7 +280,7 @@ def _phrases(t):
 
 
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(goals=st.lists(st.tuples(_target_strategy(), st.sampled_from((None, *ROOMS))), min_size=1, max_size=4),
+@given(goals=st.lists(st.tuples(target_strategy(HEADS, MODS), st.sampled_from((None, *ROOMS))), min_size=1, max_size=4),
        seed=st.integers(0, 10**6), order=st.sampled_from(("strict", "free")))
 def test_renderers_never_raise_and_write_every_piece(goals, seed, order):
     rng = gen(seed)
