@@ -1,5 +1,6 @@
-"""CLI subcommands of the evaluation stage: sweep (hyperparameter grids), tune (gradient tuning) and
-fit-verifier (the reflection's thresholds, fitted on the seen split)."""
+"""CLI subcommands of the evaluation stage: sweep (hyperparameter grids), tune (gradient tuning),
+fit-verifier (the reflection's thresholds, fitted on the seen split) and show-episode (a video of one
+episode of an eval run, replayed with the recorder on)."""
 
 from __future__ import annotations
 
@@ -91,7 +92,50 @@ def cmd_fit_verifier(args, cfg) -> int:
     return 0
 
 
+def cmd_show_episode(args, cfg) -> int:
+    import sys
+
+    from ragnav_jax.evaluation.replay import load_eval_run, outcome_differences, replay_episode
+    from ragnav_jax.evaluation.video import SUFFIXES, ffmpeg_exe, save_episode_video
+
+    out = Path(args.out)
+    if args.config:
+        raise UserError("show-episode replays with the run's own config (RUN/config.yaml); drop --config")
+    if out.suffix.lower() not in SUFFIXES:
+        raise UserError(f"--out {out}: use a .gif or .mp4 file name")
+    if out.exists() and not args.force:
+        raise UserError(f"--out {out}: exists (use --force to overwrite)")
+    if out.suffix.lower() == ".mp4" and ffmpeg_exe() is None:
+        raise UserError("MP4 needs the imageio-ffmpeg package (pip install imageio-ffmpeg); or write a .gif")
+    if args.fps < 1 or args.max_frames < 2:
+        raise UserError("--fps must be >= 1 and --max-frames >= 2")
+    ev = load_eval_run(args.run, args.method)
+    row = replay_episode(ev, args.episode)
+    if not row.get("legs"):
+        raise UserError(f"episode {args.episode} drove no leg ({row['reason']}): nothing to animate")
+    diff = outcome_differences(ev.rows[args.episode], row)
+    if diff:  # another machine or JAX version can drive a step differently; the video shows the replay
+        print(f"ragnav: warning: the replay of {args.episode} differs from {args.run}'s row in {', '.join(diff)}",
+              file=sys.stderr)
+    ep = next(e for e in ev.episodes if e.id == args.episode)
+    scene = next(s for s in ev.scenes if s.name == ep.scene)
+    n = save_episode_video(scene, row, out, fps=args.fps, max_frames=args.max_frames, instruction=ep.instruction)
+    print(f"{args.episode} ({args.method}: {row['reason']}, {'replay matches the run' if not diff else 'replay differs'})"
+          f": {n} frames -> {out}")
+    return 0
+
+
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    p = sub.add_parser("show-episode", parents=[common],
+                       help="video of one episode of an eval run (replayed): trajectory, candidates, camera, FOUND")
+    p.add_argument("run", metavar="RUN", help="the eval's --out folder")
+    p.add_argument("--method", default="ragnav", help="evaluated method (default ragnav)")
+    p.add_argument("--episode", required=True, help="episode id (RUN/eval/<method>/episodes.jsonl)")
+    p.add_argument("--out", required=True, help="video file (.gif or .mp4)")
+    p.add_argument("--force", action="store_true", help="overwrite --out")
+    p.add_argument("--fps", type=int, default=8, help="frames per second (default 8)")
+    p.add_argument("--max-frames", type=int, default=160, help="frames at most (default 160)")
+    p.set_defaults(func=cmd_show_episode, overrides_allowed=False)
     p = sub.add_parser("fit-verifier", parents=[common],
                        help="fit the reflection's verifier thresholds on seen-split houses (writes OUT/fitted.json)")
     p.add_argument("--out", required=True, help="output folder")

@@ -33,7 +33,7 @@ import itertools
 import math
 import time
 from collections import defaultdict, deque
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 import jax
 import jax.numpy as jnp
@@ -149,6 +149,8 @@ class Candidates:
     timing: dict
     est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
     top: list = dataclasses.field(default_factory=list)  # per episode, per goal: the retrieval's top-1 node or None
+    scores: list = dataclasses.field(default_factory=list)  # per episode, per goal, per candidate: retrieval score
+    # (RAGNav: the relaxed one for candidates the hard constraints dropped) or None (Oracle)
 
 
 @jax.jit
@@ -255,6 +257,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     cand_of: dict[tuple[str, int], list[int]] = {}
     est_of: dict[tuple[str, int], list] = {}
     top_of: dict[tuple[str, int], int | None] = {}  # the kernel's top-1 (retrieval accuracy), before any pre-check
+    score_of: dict[tuple[str, int], list] = {}
     timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
     if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
@@ -309,6 +312,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
                                            node_live[b_], inst_pos[b_])
                     cand_of[(ep.id, kk)] = nodes
                     est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
+                    s_, r_ = score[sl], relaxed[sl]
+                    score_of[(ep.id, kk)] = [float(s_[n] if s_[n] > K.NEG / 2 else r_[n]) for n in (ranked[j] for j in pick)]
     elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
         t_total, n_total = 0.0, 0
         for b, meta in enumerate(bank.metas):
@@ -331,6 +336,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             n_total += len(mine)
             for it, row in zip(mine, s):
                 cand_of[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
+                score_of[(it[0].id, it[1])] = [float(row[x]) for x in cand_of[(it[0].id, it[1])]]
         timing["retrieval_ms_single"] = timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
     elif spec.retrieval == "oracle":
         for ep, kk, goal, _sg in items:
@@ -344,8 +350,9 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         est_ep[ep.id].append(est_of.get((ep.id, kk), [None] * len(cand_of.get((ep.id, kk), []))))
     top = [[top_of[(ep.id, kk)] if (ep.id, kk) in top_of else (c[0] if c else None)
             for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
+    scores = [[score_of.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,
-                      [est_ep[ep.id] for ep in episodes], top)
+                      [est_ep[ep.id] for ep in episodes], top, scores)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -413,6 +420,8 @@ class EpisodeState:
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
+    trace: dict | None = None  # evaluate_navigation(trace=...): candidates and rejections; its legs are recorded
+    # with every control step's pose and what the look-around saw
 
 
 class Loop:
@@ -613,6 +622,8 @@ class Loop:
         return [int(o) for o in objects if o < len(v) and v[o]]
 
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
+        if st.trace is not None:
+            st.trace["rejections"].append({"goal": g, "candidate": st.cptr[g], "why": why, "leg": len(st.legs) - 1})
         st.cptr[g] += 1
         st.rejected[g] += 1
         if self.current(st, g) is None:
@@ -830,9 +841,11 @@ class Loop:
 
 def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
                         method: str | None = None, streams: dict | None = None, progress: bool = False,
-                        executor: Executor | None = None, verifier: Verifier | None = None) -> tuple[list[dict], dict]:
+                        executor: Executor | None = None, verifier: Verifier | None = None,
+                        trace: Collection[str] = ()) -> tuple[list[dict], dict]:
     """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
-    the same episodes can share one `verifier` (and its encoder cache)."""
+    the same episodes can share one `verifier` (and its encoder cache). The rows of the episode ids in
+    `trace` also hold "legs" with per-step poses and a "trace" (candidates, rejections: `trace_of`)."""
     from ragnav_jax.evaluation.metrics import episode_row, summarise
 
     method = method or cfg.eval.method
@@ -865,6 +878,7 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
         if spec.retrieval != "etpnav":
             loop.replan(st)
         st.planned = list(st.remaining)
+        st.trace = trace_of(loop, st, cands) if ep.id in trace else None
         states.append(st)
     task_time = (time.perf_counter() - t0) / max(len(episodes), 1)
     # 2./3. execute and reflect, a batch of episodes at a time
@@ -876,8 +890,30 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
         bar(len(chunk))
     bar(0, close=True)
     rows = [episode_row(st, loop, oracle.nodes[st.e], cands, cfg, method) for st in states]
+    for r, st in zip(rows, states):
+        if st.trace is not None:
+            r["trace"] = st.trace
     summary = summarise(rows, cands.timing, task_time, method)
     return rows, summary
+
+
+def trace_of(loop: Loop, st: EpisodeState, cands: Candidates) -> dict:
+    """An episode's recorder: per goal its candidates (node, node xy, retrieval score, estimated target
+    position) and the rejections the loop appends (goal, candidate index, why, index of the leg after
+    which it was made: -1 before the first)."""
+    scores = cands.scores[st.e] if cands.scores else []
+
+    def one(g, j, n):
+        s = scores[g][j] if g < len(scores) else None
+        e = st.ests[g][j] if j < len(st.ests[g]) else None
+        return {"node": int(n), "xy": _xy(loop.pos[st.b][n]), "score": None if s is None else round(s, 4),
+                "est": None if e is None else _xy(e)}
+
+    return {"candidates": [[one(g, j, n) for j, n in enumerate(c)] for g, c in enumerate(st.cands)], "rejections": []}
+
+
+def _xy(v) -> list[float]:
+    return [round(float(x), 3) for x in v[:2]]
 
 
 def _progress(total: int, on: bool, label: str):
@@ -910,6 +946,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
     sidx = jnp.asarray(scene_idx)
     d = ex.init(sidx, jnp.asarray(start))
     poses = start.copy()
+    traced = any(st.trace is not None for st in chunk)
     while True:
         legs = [None] * E
         for i, st in enumerate(chunk):
@@ -935,12 +972,14 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
                 ways[i] = way
                 st = chunk[i]
                 allow[i] = max(min(cfg.eval.leg_max_steps, cfg.eval.max_steps - st.steps - st.look_steps), 0)
-        res = ex.run(sidx, d, jnp.asarray(pts), jnp.asarray(n), jnp.asarray(allow))
+        args = (sidx, d, jnp.asarray(pts), jnp.asarray(n), jnp.asarray(allow))
+        res, trail = ex.run_traced(*args) if traced else (ex.run(*args), None)
         d = res.d
         vis, _ = ex.look(sidx, d)
         poses = np.asarray(d.qpos[:, :3])
         arrived, steps, length = np.asarray(res.arrived), np.asarray(res.steps), np.asarray(res.length)
         pen, vis = np.asarray(res.penetration), np.asarray(vis)
+        trail = None if trail is None else np.asarray(trail)  # (B, leg_max_steps, 3) poses per control step
         for i, leg in enumerate(legs):
             if leg is None:
                 continue
@@ -948,8 +987,12 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
             st.steps += int(steps[i])
             st.length += float(length[i])
             st.penetration = max(st.penetration, float(pen[i]))
-            if cfg.eval.record_legs:
+            if cfg.eval.record_legs or st.trace is not None:
                 st.legs.append({"kind": leg[0], "goal": int(leg[1]), "steps": int(steps[i]), "arrived": bool(arrived[i]),
                                 "waypoints": np.round(np.asarray(ways[i], np.float64)[: n[i]], 3).tolist(),
-                                "end": [round(float(x), 3) for x in poses[i][:2]]})
+                                "end": _xy(poses[i])})
+                if st.trace is not None:
+                    objs = loop.scenes[st.ep.scene].objects
+                    st.legs[-1].update(poses=np.round(trail[i, : steps[i]].astype(np.float64), 3).tolist(),
+                                       visible=[objs[o].id for o in np.flatnonzero(vis[i]) if o < len(objs)])
             loop.after_leg(st, leg, poses[i], bool(arrived[i]), vis[i])

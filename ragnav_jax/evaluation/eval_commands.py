@@ -97,7 +97,8 @@ def cmd_eval(args, cfg) -> int:
     for m in methods:
         rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, m, streams=streams,
                                             progress=not args.quiet, executor=executor)
-        summary.update({"scenes": str(args.scenes), "episodes_file": str(args.episodes)})
+        summary.update({"scenes": str(Path(args.scenes).resolve()), "episodes_file": str(Path(args.episodes).resolve()),
+                        "memory": args.memory and str(Path(args.memory).resolve())})  # what show-episode replays
         d = out / "eval" / m.replace(":", "_")
         d.mkdir(parents=True, exist_ok=True)
         with open(d / "episodes.jsonl", "w") as f:

@@ -62,6 +62,7 @@ class Executor:
     path_points: int
     control_dt: float
     run: object  # jitted (scene_idx (E,), d, points (E,P,2), n (E,), allowance (E,)) -> LegResult
+    run_traced: object  # as run, -> (LegResult, poses (E, leg_max_steps, 3) per control step); compiled on first use
     look: object  # jitted (scene_idx (E,), d) -> (visible (E, O) bool, distance (E, O) float32)
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
     traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
@@ -89,7 +90,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
     rb = model.layout.robot_body
     lookahead, tol, stall_max = cfg.explore.lookahead, ev.arrive_tol, ev.stall_steps
     headings = jnp.asarray(np.arange(ev.look_headings) * 2 * math.pi / ev.look_headings, jnp.float32)
-    traces = {"run": 0, "look": 0, "init": 0}  # bumped by Python at trace time only
+    traces = {"run": 0, "look": 0, "init": 0}  # bumped by Python at trace time only (run_traced: once used)
 
     def models(scene_idx):
         g = jax.tree.map(lambda x: x[scene_idx], tables.geometry)
@@ -113,13 +114,16 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         last = path.points[jnp.maximum(path.n - 1, 0)]
         return (path.n == 0) | (jnp.linalg.norm(d.qpos[:2] - last) < tol)
 
-    @jax.jit
-    def run(scene_idx, d, points, n, allowance):
-        traces["run"] += 1
+    def drive(scene_idx, d, points, n, allowance, record: bool):
+        """The legs' while_loop; with `record`, also every episode's pose after each of its control steps
+        (row t of an episode's (leg_max_steps, 3) buffer for its step t + 1, valid for t < steps)."""
+        key = "run_traced" if record else "run"
+        traces[key] = traces.get(key, 0) + 1
         m, in_axes = models(scene_idx)
         E = scene_idx.shape[0]
         paths = jax.vmap(Path.of)(points, n)
         zeros_i = jnp.zeros(E, jnp.int32)
+        buf = jnp.zeros((E, ev.leg_max_steps if record else 0, 3), jnp.float32)
 
         def status(c):
             d, paths, steps, length, stall, pen = c
@@ -127,19 +131,25 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
             return arrived, ~arrived & (steps < allowance) & (stall < stall_max)
 
         def cond(c):
-            return jnp.any(status(c[1:])[1])
+            return jnp.any(status(c[1:7])[1])
 
         def body(c):
-            t, d, paths, steps, length, stall, pen = c
+            t, d, paths, steps, length, stall, pen, buf = c
             active = status((d, paths, steps, length, stall, pen))[1]
             out = jax.vmap(one_step, in_axes=(in_axes, 0, 0, 0, 0, 0, 0, 0))(m, d, paths, active, steps, length, stall, pen)
-            return (t + 1, *out)
+            if record:  # an episode is active for its first `steps` iterations, so row t is its step t + 1
+                buf = jax.lax.dynamic_update_slice_in_dim(buf, out[0].qpos[:, None, :3], t, axis=1)
+            return (t + 1, *out, buf)
 
-        c = (jnp.int32(0), d, paths, zeros_i, jnp.zeros(E, jnp.float32), zeros_i, jnp.zeros(E, jnp.float32))
+        c = (jnp.int32(0), d, paths, zeros_i, jnp.zeros(E, jnp.float32), zeros_i, jnp.zeros(E, jnp.float32), buf)
         c = jax.lax.while_loop(cond, body, c)
-        _, d, paths, steps, length, stall, pen = c
+        _, d, paths, steps, length, stall, pen, buf = c
         arrived = jax.vmap(arrived_of)(d, paths)
-        return LegResult(d, arrived, steps, length, pen)
+        res = LegResult(d, arrived, steps, length, pen)
+        return (res, buf) if record else res
+
+    run = jax.jit(functools.partial(drive, record=False))
+    run_traced = jax.jit(functools.partial(drive, record=True))
 
     @jax.jit
     def look(scene_idx, d):
@@ -164,7 +174,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, look, init, traces, {})
+                    run, run_traced, look, init, traces, {})
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:
