@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed-stamp
 DEMO_OUT ?= runs/demo
 BENCH_OUT ?= runs/bench
 
-.PHONY: install demo test lint clean bench
+.PHONY: install install-gpu demo test lint clean bench
 
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
@@ -17,6 +17,12 @@ $(STAMP): pyproject.toml requirements.lock
 	touch $(STAMP)
 
 install: $(STAMP)
+
+# On a machine with an NVIDIA GPU (driver only; CUDA comes as wheels): the CUDA build of the pinned JAX into
+# the same venv, then `ragnav doctor` checks that JAX's default backend is the GPU and MJX runs on it.
+install-gpu: install
+	$(PY) -m pip install --quiet -c requirements.lock -e ".[dev,cuda]"
+	$(VENV)/bin/ragnav doctor --backend gpu
 
 # The full pipeline on a small embedded default (2 houses, hashing embedder, 3 episodes per modality
 # and scene): generate, explore in MJX, build memory, episodes, closed-loop evaluation of RAGNav

@@ -13,7 +13,7 @@ import sys
 from ragnav_jax.errors import UserError
 
 # Stage modules that add subcommands; later stages append theirs.
-COMMAND_MODULES = ("ragnav_jax.world.commands", "ragnav_jax.sim.commands", "ragnav_jax.language.commands", "ragnav_jax.memory.commands", "ragnav_jax.retrieval.commands", "ragnav_jax.planning.commands", "ragnav_jax.evaluation.commands", "ragnav_jax.bench.commands", "ragnav_jax.evaluation.eval_commands")
+COMMAND_MODULES = ("ragnav_jax.world.commands", "ragnav_jax.sim.commands", "ragnav_jax.language.commands", "ragnav_jax.memory.commands", "ragnav_jax.retrieval.commands", "ragnav_jax.planning.commands", "ragnav_jax.evaluation.commands", "ragnav_jax.bench.commands", "ragnav_jax.evaluation.eval_commands", "ragnav_jax.doctor")
 
 
 def _common_parser() -> argparse.ArgumentParser:

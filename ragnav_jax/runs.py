@@ -18,9 +18,10 @@ TRACKED_PACKAGES = (
 )
 
 
-def package_versions() -> dict[str, str]:
+def package_versions(names: tuple[str, ...] = TRACKED_PACKAGES) -> dict[str, str]:
+    """Installed version of each distribution in `names` ('not installed' where absent)."""
     out = {}
-    for name in TRACKED_PACKAGES:
+    for name in names:
         try:
             out[name] = metadata.version(name)
         except metadata.PackageNotFoundError:
