@@ -5,8 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 
 
-def write_table(rows: list[dict], stem: str | Path) -> tuple[Path, Path]:
-    """Writes `stem`.csv and `stem`.md from a list of row dicts; returns both paths."""
+def write_table(rows: list[dict], stem: str | Path, markdown: list[dict] | None = None) -> tuple[Path, Path]:
+    """Writes `stem`.csv from `rows` and `stem`.md from `markdown` (default: the same rows; pass rows that
+    read differently, e.g. with combined cells); returns both paths. Missing figures (None, NaN) are empty
+    cells in both files, never 'nan'."""
     import pandas as pd
 
     stem = Path(stem)
@@ -14,5 +16,8 @@ def write_table(rows: list[dict], stem: str | Path) -> tuple[Path, Path]:
     df = pd.DataFrame(rows)
     csv, md = stem.with_suffix(".csv"), stem.with_suffix(".md")
     df.to_csv(csv, index=False)
-    md.write_text(df.to_markdown(index=False) + "\n")
+    shown = df if markdown is None else pd.DataFrame(markdown)
+    shown = shown.astype(object).where(shown.notna(), None)
+    # given markdown cells are formatted already ("1.000" stays so, not re-read as the number 1)
+    md.write_text(shown.to_markdown(index=False, missingval="", disable_numparse=markdown is not None) + "\n")
     return csv, md

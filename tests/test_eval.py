@@ -191,7 +191,7 @@ def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartmen
 
 
 def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):
-    from ragnav_jax.evaluation.plot import draw_episode
+    from ragnav_jax.evaluation.plot import draw_episode, save_episode_plot
 
     cfg, bank, streams, emb, ex = setup
     rec = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, record_legs=True))
@@ -205,6 +205,7 @@ def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_p
             assert np.min(np.linalg.norm(ends - np.asarray(d["xy"]), axis=1)) < 2e-3
         ax = draw_episode(apartment, r)
         assert len(ax.lines) >= len(r["legs"])
+    assert save_episode_plot(apartment, rows[0], tmp_path / "route.png", episodes[0].instruction).stat().st_size > 1000
     plain, _ = evaluate_navigation(bank, [apartment], episodes, emb, cfg, "ragnav", executor=ex)
     assert all("legs" not in r for r in plain)
     with pytest.raises(ValueError, match="record_legs"):

@@ -4,8 +4,10 @@
 
 --scenes is a run folder (with scenes/, and explore/ + memory/bank when already built) or a folder of
 scene files; scenes without memory are explored and their memory built in RUN first. --method takes a
-name, a comma-separated list, or `all`. Writes RUN/eval/<method>/{episodes.jsonl, summary.json} and
-RUN/eval/table.{md,csv} (one row per method), and prints the table.
+name, a comma-separated list, or `all`. Writes RUN/eval/<method>/{episodes.jsonl, summary.json}, the
+tables (`write_eval_tables`: table, table_by_modality, table_full; .md and .csv), the bar chart
+RUN/eval/methods.png and, with eval.record_legs=true, the first method's route of one episode
+RUN/eval/route.png; prints the main table and the paths.
 """
 
 from __future__ import annotations
@@ -17,9 +19,14 @@ from pathlib import Path
 
 from ragnav_jax.errors import UserError
 
-TABLE_KEYS = ("success_rate", "retrieval_accuracy", "spl", "progress", "ppl", "travel_distance_m", "oracle_m",
+# table_full: every figure of a summary and of its modality blocks
+TABLE_KEYS = ("episodes", "success_rate", "retrieval_accuracy", "spl", "progress", "ppl", "travel_distance_m", "oracle_m",
               "planned_rule1_m", "retrieval_ms", "retrieval_ms_single", "task_time_s", "sim_time_s", "total_time_s",
               "wrong_declarations")
+# The main table's markdown: header and number format of each CSV column (success carries its interval).
+HEADERS = {"success": "success [95% CI]", "spl": "SPL", "top1": "top-1 retrieval", "travel_m": "travel (m)",
+           "time_s": "time / episode (s)"}
+FORMATS = {"success": "{:.3f}", "spl": "{:.3f}", "top1": "{:.3f}", "travel_m": "{:.1f}", "time_s": "{:.1f}"}
 
 
 def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quiet: bool):
@@ -71,7 +78,6 @@ def cmd_eval(args, cfg) -> int:
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.encoder import make_embedder
     from ragnav_jax.runs import init_run
-    from ragnav_jax.tables import write_table
 
     out = Path(args.out)
     methods = list(NAV_METHODS) if args.method == "all" else [m.strip() for m in (args.method or cfg.eval.method).split(",")]
@@ -93,7 +99,7 @@ def cmd_eval(args, cfg) -> int:
                              buckets=cfg.memory.token_buckets)
     used = [s for s in scenes if s.name in {e.scene for e in episodes}]
     executor = make_executor(used, cfg)
-    table = []
+    summaries, first = {}, None
     for m in methods:
         rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, m, streams=streams,
                                             progress=not args.quiet, executor=executor)
@@ -105,16 +111,62 @@ def cmd_eval(args, cfg) -> int:
             for r in rows:
                 f.write(json.dumps(r) + "\n")
         (d / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
-        table.append({"method": m, **{k: summary.get(k) for k in TABLE_KEYS}})
-        for mod, blk in summary["by_modality"].items():
-            table.append({"method": f"{m} [{mod}]", **{k: blk.get(k) for k in TABLE_KEYS if k in blk}})
-    write_table(table, out / "eval" / "table")
-    save_bar_plot([r for r in table if "[" not in r["method"]], out / "eval" / "methods.png")
+        summaries[m] = summary
+        first = first or rows
+    tables = write_eval_tables(summaries, out / "eval")
+    pictures = [save_bar_plot([{"method": m, **figures(s)} for m, s in summaries.items()], out / "eval" / "methods.png")]
+    if cfg.eval.record_legs:  # one episode with the most goals (the first such), not chosen by its outcome
+        from ragnav_jax.evaluation.plot import save_episode_plot
+
+        row = max(first, key=lambda r: r["goals"])
+        pictures.append(save_episode_plot(next(s for s in scenes if s.name == row["scene"]), row, out / "eval" / "route.png",
+                                          next(e.instruction for e in episodes if e.id == row["episode"])))
     if len(methods) == 1:  # a single method's summary also sits at the top of the eval folder
         shutil.copy(out / "eval" / methods[0].replace(":", "_") / "summary.json", out / "eval" / "summary.json")
-    print((out / "eval" / "table.md").read_text())
-    print(f"-> {out / 'eval'}")
+    print(tables[0].read_text())
+    print("tables (.md and .csv): " + ", ".join(str(t) for t in tables))
+    print("pictures: " + ", ".join(str(p) for p in pictures))
     return 0
+
+
+def figures(blk: dict) -> dict:
+    """The main table's figures of one summary block (a method's, or one modality's of it: no time there)."""
+    lo, hi = blk.get("success_ci95") or (None, None)
+    out = {"episodes": blk.get("episodes"), "success": blk.get("success_rate"), "ci_low": lo, "ci_high": hi,
+           "spl": blk.get("spl"), "top1": blk.get("retrieval_accuracy"), "travel_m": blk.get("travel_distance_m")}
+    return out | ({"time_s": blk["total_time_s"]} if "total_time_s" in blk else {})
+
+
+def readable(row: dict) -> dict:
+    """A main-table CSV row as its markdown shows it: headers in words, figures rounded, the success rate
+    and its interval in one cell ("0.917 [0.80, 0.97]"), empty cells where a figure does not exist."""
+    out = {}
+    for k, v in row.items():
+        if k in ("ci_low", "ci_high"):
+            continue
+        cell = v if v is None or k not in FORMATS else FORMATS[k].format(v)
+        if k == "success" and v is not None and row.get("ci_low") is not None:
+            cell += f" [{row['ci_low']:.2f}, {row['ci_high']:.2f}]"
+        out[HEADERS.get(k, k)] = cell
+    return out
+
+
+def write_eval_tables(summaries: dict[str, dict], folder: Path) -> list[Path]:
+    """Writes the tables of `summaries` (method -> summary) in `folder`, as .csv and .md; returns the .md paths:
+    table (one row per method: success with its Wilson 95% interval, SPL, top-1 retrieval, travel, time per
+    episode = task time + simulated time), table_by_modality (the same per instruction modality, no time)
+    and table_full (every figure, one row per method and per method and modality)."""
+    from ragnav_jax.tables import write_table
+
+    main = [{"method": m, **figures(s)} for m, s in summaries.items()]
+    by_mod = [{"method": m, "modality": mod, **figures(b)} for m, s in summaries.items() for mod, b in s["by_modality"].items()]
+    full = []
+    for m, s in summaries.items():
+        full.append({"method": m, **{k: s.get(k) for k in TABLE_KEYS}})
+        full += [{"method": f"{m} [{mod}]", **{k: b.get(k) for k in TABLE_KEYS}} for mod, b in s["by_modality"].items()]
+    return [write_table(main, folder / "table", [readable(r) for r in main])[1],
+            write_table(by_mod, folder / "table_by_modality", [readable(r) for r in by_mod])[1],
+            write_table(full, folder / "table_full")[1]]
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
@@ -130,21 +182,28 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
 
 
 def save_bar_plot(rows: list[dict], path: Path) -> Path:
-    """Success rate, SPL and retrieval accuracy per method, side by side."""
+    """Success rate (error bars: its 95% interval), SPL and top-1 retrieval per method, side by side, from
+    main-table rows (`figures`); a figure that does not exist (ETPNav's retrieval) has no bar."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
 
-    keys = ("success_rate", "spl", "retrieval_accuracy")
+    def col(k):
+        return np.array([np.nan if r.get(k) is None else r[k] for r in rows], float)
+
+    keys = {"success": "success (95% CI)", "spl": "SPL", "top1": "top-1 retrieval"}
     x = np.arange(len(rows))
     fig, ax = plt.subplots(figsize=(max(6, 1.1 * len(rows)), 3.5))
-    for j, k in enumerate(keys):
-        ax.bar(x + (j - 1) * 0.27, [r.get(k) or 0.0 for r in rows], 0.27, label=k)
+    for j, (k, label) in enumerate(keys.items()):
+        ax.bar(x + (j - 1) * 0.27, col(k), 0.27, label=label)
+    s = col("success")
+    ax.errorbar(x - 0.27, s, yerr=np.abs([s - col("ci_low"), col("ci_high") - s]), fmt="none", ecolor="k", capsize=3, lw=1)
     ax.set_xticks(x, [r["method"] for r in rows], rotation=30, ha="right")
-    ax.set_ylim(0, 1)
-    ax.legend(fontsize=8)
+    ax.set_ylim(0, 1.05)
+    ax.set_title(f"{rows[0].get('episodes') if rows else 0} episodes per method", fontsize=9)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)

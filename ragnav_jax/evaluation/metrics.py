@@ -7,6 +7,7 @@ Definitions (per episode; the summary averages over episodes, and over each moda
 - travel_distance_m: length of the simulated trajectory (MJX robot positions per control step).
 - planned_rule1_m / planned_rule2_m: the first plan's route over the map, Rule 1 (edge distances) and
   Rule 2 (Euclidean between consecutive node coordinates); straight-line planners: the straight segments.
+- success_ci95: Wilson 95% interval of the success rate over the block's episodes (`wilson_interval`).
 - oracle_m: the oracle's shortest route (true goal nodes, optimal allowed order, Rule 1 from the start node).
 - spl = success * oracle_m / max(travel, oracle_m); ppl = progress * oracle_m / max(travel, oracle_m).
 - retrieval_accuracy: top-1 candidate observes the goal's instance (instance-level rule of
@@ -131,6 +132,7 @@ def _block(rows: list[dict]) -> dict:
     return {
         "episodes": len(rows),
         "success_rate": _mean([float(r["success"]) for r in rows]),
+        "success_ci95": [round(x, 4) for x in wilson_interval(len(ok), len(rows))] if rows else None,
         "retrieval_accuracy": _mean([float(t) for t in top1]) if top1 else None,
         "spl": _mean([r["spl"] for r in rows]),
         "progress": _mean([r["progress"] for r in rows]),

@@ -3,9 +3,12 @@ the declarations and the goals (rows recorded with `eval.record_legs=true`)."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
@@ -46,3 +49,17 @@ def draw_episode(scene: Scene, row: dict, ax=None, title: str | None = None):
     ax.set_title(title or f"{row['episode']} ({row['method']}): {row['reason']}", fontsize=8)
     ax.legend(fontsize=6, loc="lower right")
     return ax
+
+
+def save_episode_plot(scene: Scene, row: dict, path: str | Path, instruction: str = "") -> Path:
+    """Saves `draw_episode` of one row (with "legs") as a picture, the instruction under its title; returns
+    the path."""
+    import textwrap
+
+    fig, ax = plt.subplots(figsize=(6, 6.4))
+    title = f"{row['episode']} ({row['method']}): {row['reason']}"
+    draw_episode(scene, row, ax=ax, title="\n".join([title, *textwrap.wrap(instruction, 80)]))
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)
