@@ -1,6 +1,7 @@
 """The `ragnav` console script: thin argument parsing around the package's stage functions.
 
-Each stage module exposes `register(subparsers, common)`; user errors print one line and exit 2.
+Each stage module exposes `register(subparsers, common)`; user errors and OS errors (a file where a
+folder should be, a read-only folder, a full disk) print one line naming the path and exit 2.
 """
 
 from __future__ import annotations
@@ -9,8 +10,9 @@ import argparse
 import importlib
 import os
 import sys
+from pathlib import Path
 
-from ragnav_jax.errors import UserError
+from ragnav_jax.errors import UserError, os_error_message, printable
 
 # Stage modules that add subcommands; later stages append theirs.
 COMMAND_MODULES = ("ragnav_jax.world.commands", "ragnav_jax.sim.commands", "ragnav_jax.language.commands", "ragnav_jax.memory.commands", "ragnav_jax.retrieval.commands", "ragnav_jax.planning.commands", "ragnav_jax.evaluation.commands", "ragnav_jax.bench.commands", "ragnav_jax.evaluation.eval_commands", "ragnav_jax.doctor")
@@ -25,9 +27,27 @@ def _common_parser() -> argparse.ArgumentParser:
 
 
 class _Parser(argparse.ArgumentParser):
-    def error(self, message):  # argparse's own exit code is already 2; keep its usage line short
-        self.print_usage(sys.stderr)
-        self.exit(2, f"ragnav: error: {message}\n")
+    def error(self, message):  # argparse's own exit code is already 2; one line, like every other user error
+        self.exit(2, f"ragnav: error: {printable(message)} (see {self.prog} --help)\n")
+
+
+class PositionalsAndOverrides(argparse.Action):
+    """Sorts a command's positionals into its own values and KEY=VALUE config overrides (any order).
+
+    The common parser's `overrides` positional comes first and takes all items but those of the command's
+    last positional; this action, given to that positional, sorts them all again: an item with '=' that is
+    not an existing path is an override, the rest are this positional's values."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        items = [*(getattr(namespace, "overrides", None) or []), *([values] if isinstance(values, str) else values)]
+        override = [("=" in x and not Path(x).exists()) for x in items]
+        namespace.overrides = [x for x, o in zip(items, override) if o]
+        mine = [x for x, o in zip(items, override) if not o]
+        if not mine:
+            parser.error(f"the following arguments are required: {self.metavar or self.dest}")
+        if self.nargs is None and len(mine) > 1:
+            parser.error(f"one {self.metavar or self.dest} expected, got {' '.join(mine)}")
+        setattr(namespace, self.dest, mine if self.nargs is not None else mine[0])
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -55,6 +75,7 @@ def _split_overrides(args) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     from ragnav_jax.config import load_config
+    from ragnav_jax.runs import discard_failed_runs
 
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -65,9 +86,10 @@ def main(argv: list[str] | None = None) -> int:
             from ragnav_jax.evaluation.sharding import init_distributed
 
             init_distributed()
-        return int(args.func(args, cfg) or 0)
+        with discard_failed_runs():
+            return int(args.func(args, cfg) or 0)
     except UserError as e:
-        print(f"ragnav: error: {e}", file=sys.stderr)
+        print(f"ragnav: error: {printable(e)}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt:
         print("ragnav: interrupted", file=sys.stderr)
@@ -75,6 +97,9 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except OSError as e:  # read-only folder, full disk, a file where a folder should be: the path and the reason
+        print(f"ragnav: error: {printable(os_error_message(e))}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

@@ -234,6 +234,10 @@ class SimConfig:
     camera_height: float = 0.8  # metres
     odom_noise: tuple[float, float] = (0.0, 0.0)  # std of recorded pose noise: (x/y metres, yaw radians)
     max_contact_pairs: int = 16  # robot-vs-box pairs collided per physics step (nearest by bounding sphere)
+    # Largest scene explore accepts: every wall and object is an MJX geom each lidar ray and contact test
+    # sees, and every object a column of the (records, objects) stream arrays (world/limits.py)
+    max_walls: int = 4096
+    max_objects: int = 4096
 
     def __post_init__(self):
         _check(0 < self.timestep <= 0.05, "sim.timestep", "must be in (0, 0.05] seconds")
@@ -247,6 +251,7 @@ class SimConfig:
         _check(0 < self.camera_fov_deg < 360, "sim.camera_fov_deg", "must be in (0, 360)")
         _check(min(self.odom_noise) >= 0, "sim.odom_noise", "standard deviations must be >= 0")
         _check(self.max_contact_pairs >= 1, "sim.max_contact_pairs", "must be >= 1")
+        _check(self.max_walls >= 1 and self.max_objects >= 1, "sim.max_walls", "max_walls and max_objects must be >= 1")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -617,9 +622,11 @@ def apply_overrides(data: dict, overrides: typing.Iterable[str]) -> dict:
 def read_yaml(path: str | Path) -> dict:
     path = Path(path)
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8")
     except OSError as e:
         raise ConfigError(f"{path}: cannot read config ({e.strerror})") from None
+    except UnicodeDecodeError as e:
+        raise ConfigError(f"{path}: not a YAML config (not UTF-8 text: undecodable byte at offset {e.start})") from None
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as e:

@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import datetime as _dt
 import json
 import platform
 import subprocess
 import sys
+from collections.abc import Iterator
 from importlib import metadata
 from pathlib import Path
 
 from ragnav_jax.config import Config, dump_yaml
+from ragnav_jax.io import write_json, write_text
 
 TRACKED_PACKAGES = (
     "ragnav-jax", "jax", "jaxlib", "mujoco", "mujoco-mjx", "brax", "flax", "optax", "orbax-checkpoint",
@@ -54,11 +58,14 @@ def init_run(run_dir: str | Path, cfg: Config, command: str, argv: list[str] | N
     that reuse the folder, so nothing earlier is overwritten.
     """
     run_dir = Path(run_dir)
+    created = not run_dir.exists()
     run_dir.mkdir(parents=True, exist_ok=True)
+    if created and (new_runs := _NEW_RUNS.get()) is not None:
+        new_runs.append(run_dir)
     cfg_path = run_dir / "config.yaml"
     if cfg_path.exists():
         cfg_path = run_dir / f"config.{command}.yaml"
-    cfg_path.write_text(dump_yaml(cfg))
+    write_text(cfg_path, dump_yaml(cfg))
     info = {
         "command": command,
         "argv": list(sys.argv if argv is None else argv),
@@ -73,8 +80,46 @@ def init_run(run_dir: str | Path, cfg: Config, command: str, argv: list[str] | N
     if info_path.exists():
         try:
             history = json.loads(info_path.read_text()).get("history", [])
-        except (json.JSONDecodeError, AttributeError):
+        except (ValueError, AttributeError):  # not JSON, not text, not an object: start the history afresh
             history = []
     history.append(info)
-    info_path.write_text(json.dumps({**info, "history": history}, indent=1) + "\n")
+    write_json(info_path, {**info, "history": history})
     return run_dir
+
+
+# Run folders created by init_run inside `discard_failed_runs` (None outside it).
+_NEW_RUNS: contextvars.ContextVar[list[Path] | None] = contextvars.ContextVar("ragnav_new_runs", default=None)
+PROVENANCE = ("config.yaml", "config.*.yaml", "run_info.json")  # what init_run writes: no results
+
+
+@contextlib.contextmanager
+def discard_failed_runs() -> Iterator[None]:
+    """Within this block, a run folder that init_run creates is removed again when the block raises
+    before any result is written (the folder holds only init_run's provenance files and empty folders),
+    so a command failing on a bad setting leaves no empty run behind. A folder holding anything else
+    (a checkpoint to resume from, a partial result) is kept."""
+    new_runs: list[Path] = []
+    token = _NEW_RUNS.set(new_runs)
+    try:
+        yield
+    except BaseException:
+        for run in new_runs:
+            _remove_if_no_results(run)
+        raise
+    finally:
+        _NEW_RUNS.reset(token)
+
+
+def _remove_if_no_results(run: Path) -> None:
+    entries = sorted(run.rglob("*"), key=lambda p: len(p.parts), reverse=True)  # deepest first
+    files = [p for p in entries if not p.is_dir()]
+    if any(p.parent != run or not any(p.match(g) for g in PROVENANCE) for p in files):
+        return
+    with contextlib.suppress(OSError):
+        for p in entries:
+            if p.is_dir():
+                p.rmdir()
+            else:
+                p.unlink()
+        run.rmdir()
+

@@ -5,10 +5,10 @@ episode of an eval run, replayed with the recorder on)."""
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.io import write_json, write_text
 
 
 def load_retrieval_inputs(run: str | Path, episodes_file: str | Path, cfg):
@@ -43,7 +43,7 @@ def cmd_sweep(args, cfg) -> int:
     rows, summary = run_sweep(cfg, batch, meta, out, fresh=args.fresh, progress=not args.quiet,
                               log=lambda m: print(m, flush=True), bank=bank, scenes=scenes)
     summary.update({"run": str(args.run), "episodes_file": str(args.episodes)})
-    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    write_json(out / "summary.json", summary)
     for key in ("best", "best_plan"):
         for v, b in summary.get(key, {}).items():
             print(f"{key} {v}: " + ", ".join(f"{k}={b[k]}" for k in b))
@@ -62,10 +62,10 @@ def cmd_tune(args, cfg) -> int:
     out = Path(args.out)
     init_run(out, cfg, "tune")
     summary, tuned_cfg = run_tune(cfg, bank, scenes, episodes, embedder, out, progress=not args.quiet)
-    (out / "tuned.yaml").write_text("# ragnav tune: the input config with the tuned retrieval section "
-                                    "(use with --config)\n" + dump_yaml(tuned_cfg))
+    write_text(out / "tuned.yaml", "# ragnav tune: the input config with the tuned retrieval section "
+                                   "(use with --config)\n" + dump_yaml(tuned_cfg))
     summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "tuned_config": str(out / "tuned.yaml")})
-    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    write_json(out / "summary.json", summary)
     print((out / "tune.md").read_text())
     h = summary["held_out"]
     print(f"held-out accuracy: tuned {h['tuned']:.4f} vs best grid point {h['grid_best']:.4f} "

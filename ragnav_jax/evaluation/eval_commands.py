@@ -13,11 +13,11 @@ RUN/eval/route.png; prints the main table and the paths.
 from __future__ import annotations
 
 import argparse
-import json
 import shutil
 from pathlib import Path
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.io import save_figure, write_json, write_jsonl, write_text
 
 # table_full: every figure of a summary and of its modality blocks
 TABLE_KEYS = ("episodes", "success_rate", "retrieval_accuracy", "spl", "progress", "ppl", "travel_distance_m", "oracle_m",
@@ -50,7 +50,7 @@ def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quie
     else:
         out.mkdir(parents=True, exist_ok=True)
         cfg_file = out / "config.eval-input.yaml"
-        cfg_file.write_text(dump_yaml(cfg))
+        write_text(cfg_file, dump_yaml(cfg))
         q = ["--quiet"] if quiet else []
         if not (out / "explore" / "summary.json").exists():
             rc = cli_main(["explore", "--scenes", str(run / "scenes" if run else src), "--out", str(out), "--config",
@@ -106,11 +106,8 @@ def cmd_eval(args, cfg) -> int:
         summary.update({"scenes": str(Path(args.scenes).resolve()), "episodes_file": str(Path(args.episodes).resolve()),
                         "memory": args.memory and str(Path(args.memory).resolve())})  # what show-episode replays
         d = out / "eval" / m.replace(":", "_")
-        d.mkdir(parents=True, exist_ok=True)
-        with open(d / "episodes.jsonl", "w") as f:
-            for r in rows:
-                f.write(json.dumps(r) + "\n")
-        (d / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+        write_jsonl(d / "episodes.jsonl", rows)
+        write_json(d / "summary.json", summary)
         summaries[m] = summary
         first = first or rows
     tables = write_eval_tables(summaries, out / "eval")
@@ -205,6 +202,6 @@ def save_bar_plot(rows: list[dict], path: Path) -> Path:
     ax.set_title(f"{rows[0].get('episodes') if rows else 0} episodes per method", fontsize=9)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)
     plt.close(fig)
     return path

@@ -24,6 +24,7 @@ import numpy as np
 
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.verify import FITTED_FORMAT, Verifier, VerifierParams, descriptors, said
+from ragnav_jax.io import write_text
 from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_matches
 
 GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
@@ -138,8 +139,9 @@ def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int =
 def write_fitted(entry: dict, embedder_name: str, path: str | Path) -> Path:
     """Adds (or replaces) one embedder's entry in a fitted.json, keeping the other embedders' entries."""
     path = Path(path)
-    d = json.loads(path.read_text()) if path.exists() else {"format": FITTED_FORMAT, "verifier": {}}
-    d["verifier"][embedder_name] = entry
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(d, indent=1, sort_keys=True) + "\n")
-    return path
+    try:
+        d = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {"format": FITTED_FORMAT, "verifier": {}}
+        d["verifier"][embedder_name] = entry
+    except (ValueError, KeyError, TypeError):  # not text, not JSON, not a fitted.json
+        raise UserError(f"{path}: exists and is not a fitted.json; move it away or choose another --out") from None
+    return write_text(path, json.dumps(d, indent=1, sort_keys=True) + "\n")

@@ -11,6 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from ragnav_jax.io import save_figure  # noqa: E402
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
 
@@ -60,6 +61,6 @@ def save_episode_plot(scene: Scene, row: dict, path: str | Path, instruction: st
     title = f"{row['episode']} ({row['method']}): {row['reason']}"
     draw_episode(scene, row, ax=ax, title="\n".join([title, *textwrap.wrap(instruction, 80)]))
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)
     plt.close(fig)
     return Path(path)

@@ -38,6 +38,7 @@ import numpy as np
 from ragnav_jax.config import SweepAxes, SweepConfig
 from ragnav_jax.errors import ConfigError, UserError
 from ragnav_jax.evaluation import sharding
+from ragnav_jax.io import save_figure, write_json
 from ragnav_jax.retrieval.evaluate import BatchMeta, RetrievalBatch, correct_counts
 from ragnav_jax.retrieval.params import ABLATIONS, RetrievalParams, ablation_params, stack_params
 
@@ -192,13 +193,13 @@ class ChunkStore:
         if tag.exists():
             try:
                 old = json.loads(tag.read_text()).get("fingerprint")
-            except (OSError, json.JSONDecodeError):
+            except (OSError, ValueError, AttributeError):  # unreadable, not text, not JSON, not an object
                 old = None
             if old != fingerprint:
                 raise UserError(f"{self.folder}: holds checkpoints of a different sweep (grid, chunk size or data "
                                 "changed); pass --fresh to discard them or choose another --out")
         self.folder.mkdir(parents=True, exist_ok=True)
-        tag.write_text(json.dumps({"fingerprint": fingerprint}) + "\n")
+        write_json(tag, {"fingerprint": fingerprint})
         self._ocp = ocp
         self.manager = ocp.CheckpointManager(
             self.folder / "chunks",
@@ -353,7 +354,7 @@ def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
             [c for c in df.columns if c in AXES]) > 2 else ""), fontsize=10)
         tag = "" if metric == "retrieval_accuracy" else f"{metric}_"
         path = folder / f"{variant}_{tag}{x}_{y}.png"
-        fig.savefig(path, dpi=110)
+        save_figure(fig, path, dpi=110)
         plt.close(fig)
         out.append(path)
     return out
@@ -414,5 +415,5 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
         write_table(rows, out / "sweep")
         summary["heatmaps"] = [str(p) for name in names
                                for p in plot_heatmaps(rows, cfg.sweep.heatmap, out / "heatmaps", name)]
-        (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+        write_json(out / "summary.json", summary)
     return rows, summary

@@ -31,6 +31,7 @@ import jax.numpy as jnp
 import numpy as np
 import optax
 
+from ragnav_jax.io import save_figure
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.retrieval.evaluate import RetrievalBatch, correct_counts, node_scores
 from ragnav_jax.retrieval.kernels import NEG
@@ -280,6 +281,6 @@ def run_tune(cfg, bank, scenes, episodes, embedder, out: str | Path | None = Non
         ax.set_ylabel("surrogate loss (train)")
         ax.legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(out / "loss.png", dpi=110)
+        save_figure(fig, out / "loss.png", dpi=110)
         plt.close(fig)
     return summary, tuned_config(cfg, res.params)

@@ -7,7 +7,8 @@ import json
 import sys
 from pathlib import Path
 
-from ragnav_jax.errors import UserError
+from ragnav_jax.errors import UserError, printable
+from ragnav_jax.io import write_json
 
 
 def cmd_parse(args, cfg) -> int:
@@ -16,9 +17,9 @@ def cmd_parse(args, cfg) -> int:
     text = " ".join(args.instruction)
     chain, note = parse_with_fallback(text, cfg.llm if args.llm else None)
     if note:
-        print(f"ragnav: note: {note}", file=sys.stderr)
-    if not args.json:
-        print(chain.describe())
+        print(f"ragnav: note: {printable(note)}", file=sys.stderr)
+    if not args.json:  # the description quotes the instruction: control characters are shown, not sent
+        print(printable(chain.describe(), keep_newlines=True))
         print()
     print(json.dumps(chain.to_dict(), indent=None if args.json else 1))
     return 0
@@ -72,7 +73,7 @@ def cmd_episodes(args, cfg) -> int:
     write_table(rows, out.with_name(out.stem + "_summary"))
     report = parse_agreement(pairs)
     report_path = out.with_name(out.stem + ".agreement.json")
-    report_path.write_text(json.dumps(report, indent=1) + "\n")
+    write_json(report_path, report)
     by_mod = {}
     for p in pairs:
         by_mod[p.episode.modality] = by_mod.get(p.episode.modality, 0) + 1
@@ -117,6 +118,8 @@ def cmd_check_parse(args, cfg) -> int:
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.cli import PositionalsAndOverrides
+
     # The instruction is free text (it may hold "x=3.5"), so overrides come with --set instead of positionally.
     p = sub.add_parser("parse", help="parse an instruction into a task chain (text and JSON)")
     p.add_argument("instruction", nargs="+", help='the instruction, e.g. "first go to the sofa, then the fridge"')
@@ -135,9 +138,10 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.set_defaults(func=cmd_episodes)
 
     p = sub.add_parser("check-parse", parents=[common], help="parse agreement with ground-truth chains")
-    p.add_argument("episodes", help="episodes .jsonl written by `ragnav episodes`")
+    p.add_argument("episodes", metavar="EPISODES", action=PositionalsAndOverrides,
+                   help="episodes .jsonl written by `ragnav episodes`")
     p.add_argument("--truth", help="ground-truth chains (default: EPISODES stem + .chains.jsonl)")
     p.add_argument("--llm", action="store_true", help="parse with the configured LLM endpoint (with fallback)")
     p.add_argument("--show", type=int, default=20, help="disagreements to print")
     p.add_argument("--min-rate", type=float, default=0.99, help="exit 1 below this agreement")
-    p.set_defaults(func=cmd_check_parse, overrides_allowed=False)
+    p.set_defaults(func=cmd_check_parse)

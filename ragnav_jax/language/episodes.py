@@ -32,6 +32,7 @@ import numpy as np
 
 from ragnav_jax.config import EpisodesConfig
 from ragnav_jax.errors import UserError
+from ragnav_jax.io import write_jsonl
 from ragnav_jax.language import lexicon as L
 from ragnav_jax.language.parser import split_noun_phrase
 from ragnav_jax.language.types import (
@@ -202,18 +203,12 @@ def load_episodes(path: str | Path, scenes: Sequence[Scene] | None = None) -> li
 
 
 def save_episodes(episodes: Iterable[Episode], path: str | Path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text("".join(json.dumps(e.to_dict()) + "\n" for e in episodes))
-    return path
+    return write_jsonl(path, (e.to_dict() for e in episodes))
 
 
 def save_truth(pairs: Iterable[GeneratedEpisode], path: str | Path) -> Path:
     """Ground-truth chains as JSONL: {"id": ..., "chain": TaskChain.to_dict()}."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text("".join(json.dumps({"id": p.episode.id, "chain": p.truth.to_dict()}) + "\n" for p in pairs))
-    return path
+    return write_jsonl(path, ({"id": p.episode.id, "chain": p.truth.to_dict()} for p in pairs))
 
 
 def load_truth(path: str | Path) -> dict[str, TaskChain]:

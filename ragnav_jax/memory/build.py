@@ -52,6 +52,7 @@ class BuildStats:
     scene_seconds: dict[str, dict[str, float]]  # scene -> host stage -> seconds
     texts_embedded: int  # distinct texts the encoder actually ran on (cache misses)
     embed_seconds: float
+    captions_rejected: tuple[str, ...] = ()  # memory.captioner=llm: "scene node N: why" per reply replaced by a template caption
 
 
 def _check_stream(scene: Scene, stream: ExplorationStream) -> None:
@@ -89,6 +90,8 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
     sensor_names = tuple(sorted({k for s in scenes for o in s.objects for k, _ in o.sensors}))
     observations: list[list[NodeObservation]] = []
     captions: list[list[cap.Caption]] = []
+    rejected: list[str] = []  # LLM replies that were not captions (memory.captioner=llm)
+    asked = 0
     for scene, stream in zip(scenes, streams):
         bar.set_description(f"memory: key poses + captions {scene.name}")
         _check_stream(scene, stream)
@@ -96,10 +99,12 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
         records = select_key_poses(stream, obstacles_numpy(scene), rule)
         obs = observe(stream, records, rule.window)
         t1 = time.perf_counter()
+        caps = [cap.template_caption(scene, o, i, cfg.seed, noise) for i, o in enumerate(obs)]
         if m.captioner == "llm":
-            caps = [cap.llm_caption(scene, o, cfg.llm) for o in obs]
-        else:
-            caps = [cap.template_caption(scene, o, i, cfg.seed, noise) for i, o in enumerate(obs)]
+            answers = [cap.llm_caption(scene, o, cfg.llm, fallback) for o, fallback in zip(obs, caps)]
+            caps = [c for c, _ in answers]
+            rejected += [f"{scene.name} node {i}: {why}" for i, (_, why) in enumerate(answers) if why]
+            asked += len(answers)
         t2 = time.perf_counter()
         per_scene[scene.name] = {"keyposes": t1 - t0, "captioning": t2 - t1}
         timings["keyposes"] += t1 - t0
@@ -107,6 +112,11 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
         observations.append(obs)
         captions.append(caps)
         bar.update(1)
+    if asked and len(rejected) == asked:
+        from ragnav_jax.errors import UserError
+
+        raise UserError(f"memory.captioner=llm: none of the {asked} replies of {cfg.llm.base_url} reads as a caption "
+                        f"({rejected[0]}); check llm.model, or use memory.captioner=template")
 
     # Embedding: one call for the whole set.
     bar.set_description("memory: embedding")
@@ -229,7 +239,7 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
         tree_members=forest.members, tree_size=forest.size, tree_embedding=forest.embedding,
         tree_position=forest.position,
     )
-    stats = BuildStats(timings, per_scene, embedder.stats["encoded"] - before, timings["embedding"])
+    stats = BuildStats(timings, per_scene, embedder.stats["encoded"] - before, timings["embedding"], tuple(rejected))
     return MemoryBank(memory, tuple(metas)), stats
 
 

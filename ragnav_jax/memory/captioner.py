@@ -235,8 +235,36 @@ def template_caption(scene: Scene, obs: NodeObservation, node: int, seed: int, n
     return Caption(text, tuple(labels), tuple(objects), tuple(phrases))
 
 
-def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg) -> Caption:
-    """Asks the configured OpenAI-compatible endpoint to describe the detections of one key pose."""
+# A reply that starts like chat ("Sure! Here is ...") or refuses is talk to the user, not a view's caption.
+CHAT_OPENERS = ("sure", "certainly", "of course", "absolutely", "okay", "ok,", "ok!", "here is", "here's",
+                "below is", "as an ai", "as a language model", "i'm sorry", "i am sorry", "sorry", "i cannot",
+                "i can't", "i can not", "unfortunately", "hello", "hi!", "hi,", "great question")
+MAX_CAPTION_CHARS = 500  # the prompt asks for one or two sentences
+
+
+def caption_problem(text: str) -> str | None:
+    """Why an LLM reply is not a caption of one view (a short phrase), or None when it reads as one."""
+    t = text.strip()
+    if not t:
+        return "an empty reply"
+    if len(t) > MAX_CAPTION_CHARS:
+        return f"{len(t)} characters long (a caption is one or two sentences)"
+    if t.lower().startswith(CHAT_OPENERS):
+        return "a chat reply, not a caption"
+    if "\n\n" in t or t.startswith(("```", "#", "- ", "* ", "1.", "{", "[")):
+        return "formatted text (paragraphs, a list, code or JSON), not a caption"
+    if "?" in t:
+        return "a question, not a description"
+    if not t.replace("\n", " ").isprintable():
+        return "control characters in the text"
+    return None
+
+
+def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg, fallback: Caption) -> tuple[Caption, str | None]:
+    """Asks the configured OpenAI-compatible endpoint to describe the detections of one key pose.
+
+    Returns (caption, problem): a reply that does not read as a caption (`caption_problem`) is replaced
+    by `fallback` (the template caption of the same view) and `problem` says why; else problem is None."""
     from ragnav_jax.memory.llm import chat
 
     lines = []
@@ -250,5 +278,7 @@ def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg) -> Caption:
         + ("\n".join(lines) if lines else "(no objects detected)")
     )
     text = chat(llm_cfg, [{"role": "user", "content": prompt}]).strip()
+    if problem := caption_problem(text):
+        return fallback, f"{problem}: {text[:60]!r}"
     labels = tuple(scene.objects[oi].category for oi in obs.objects)
-    return Caption(text or "Nothing notable in view.", labels, tuple(int(oi) for oi in obs.objects), labels)
+    return Caption(text, labels, tuple(int(oi) for oi in obs.objects), labels), None

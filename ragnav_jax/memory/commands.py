@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import argparse
-import json
+import sys
 from pathlib import Path
 
-from ragnav_jax.errors import UserError
+from ragnav_jax.errors import UserError, printable
+from ragnav_jax.io import write_json, write_jsonl
 
 
 def bank_dir(run: Path) -> Path:
@@ -52,17 +53,20 @@ def cmd_build_memory(args, cfg) -> int:
     summary["embedder"] = cfg.memory.embedder
     summary["stage_seconds"] = {k: round(v, 4) for k, v in stats.stage_seconds.items()}
     summary["texts_embedded"] = stats.texts_embedded
-    (stage / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    summary["captions_rejected"] = list(stats.captions_rejected)
+    if stats.captions_rejected:
+        n = len(stats.captions_rejected)
+        print(f"ragnav: warning: memory.captioner=llm: {n} of {sum(m.num_nodes for m in bank.metas)} replies did not read as a "
+              f"caption and were replaced by template captions ({printable(stats.captions_rejected[0])}"
+              f"{'; all listed in summary.json' if n > 1 else ''})", file=sys.stderr)
+    write_json(stage / "summary.json", summary)
     rows = [{k: (", ".join(map(str, v)) if isinstance(v, list) else v) for k, v in r.items()} for r in summary["scenes"]]
     write_table(rows, stage / "memory_summary")
-    with open(stage / "nodes.jsonl", "w") as f:
-        pos = bank.memory.position
-        for b, meta in enumerate(bank.metas):
-            for i in range(meta.num_nodes):
-                f.write(json.dumps({
-                    "scene": meta.scene, "node": i, "position": [round(float(v), 3) for v in pos[b, i]],
-                    "caption": meta.captions[i], "observed": list(meta.observed_ids[i]),
-                }) + "\n")
+    pos = bank.memory.position
+    write_jsonl(stage / "nodes.jsonl", ({
+        "scene": meta.scene, "node": i, "position": [round(float(v), 3) for v in pos[b, i]],
+        "caption": meta.captions[i], "observed": list(meta.observed_ids[i]),
+    } for b, meta in enumerate(bank.metas) for i in range(meta.num_nodes)))
     print((stage / "memory_summary.md").read_text())
     print(f"memory of {len(scenes)} scenes (mean {summary['mean_nodes']:.1f} nodes) written to {out}")
     return 0

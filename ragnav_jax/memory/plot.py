@@ -10,6 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from ragnav_jax.io import save_figure  # noqa: E402
 from ragnav_jax.memory.types import DualBasisMemory, MemoryMeta  # noqa: E402
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
@@ -77,6 +78,6 @@ def save_memory_plot(scene: Scene, mem: DualBasisMemory, meta: MemoryMeta, out: 
         ax2.set_xlabel("merge distance")
     ax2.set_title("semantic forest dendrogram")
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    save_figure(fig, out, dpi=dpi)
     plt.close(fig)
     return out

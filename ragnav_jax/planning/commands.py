@@ -6,7 +6,8 @@ import argparse
 import json
 from pathlib import Path
 
-from ragnav_jax.errors import UserError
+from ragnav_jax.errors import UserError, printable
+from ragnav_jax.io import write_json
 
 
 def cmd_plan(args, cfg) -> int:
@@ -28,10 +29,10 @@ def cmd_plan(args, cfg) -> int:
     emb = make_embedder(bank.metas[0].embedder, dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
                         buckets=cfg.memory.token_buckets)
     guide = plan_instruction(bank, scenes[args.scene], args.instruction, emb, cfg)
-    print(guide_text(guide))
+    print(printable(guide_text(guide), keep_newlines=True))  # the guide quotes the user's instruction
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.json).write_text(json.dumps(guide, indent=1) + "\n")
+        write_json(Path(args.json), guide)
         print(f"guide written to {args.json}")
     else:
         print(json.dumps({k: guide[k] for k in guide if k not in ("chain",)}, indent=1))

@@ -14,6 +14,7 @@ from pathlib import Path as FilePath
 
 import numpy as np
 
+from ragnav_jax.io import save_figure
 from ragnav_jax.planning.paths import edge_lengths, path_list
 from ragnav_jax.planning.types import STATUS_NAMES, OrderResult
 
@@ -285,6 +286,6 @@ def save_route_picture(scene, guide: dict, out: str | FilePath, dpi: int = 150) 
     names = " -> ".join(t["name"] for t in guide["targets"]) or "no reachable target"
     ax.set_title(f"{scene.name}: {names} ({guide['distance_m'] or 0:.1f} m)")
     ax.figure.tight_layout()
-    ax.figure.savefig(out, dpi=dpi)
+    save_figure(ax.figure, out, dpi=dpi)
     plt.close(ax.figure)
     return out

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.io import write_json, write_jsonl
 
 
 def cmd_retrieve(args, cfg) -> int:
@@ -34,10 +34,8 @@ def cmd_retrieve(args, cfg) -> int:
     init_run(out, cfg, "retrieve")
     rows, summary = evaluate_retrieval(bank, scenes, episodes, embedder, method, params_from_config(cfg.retrieval))
     summary.update({"run": str(run), "episodes_file": str(args.episodes)})
-    with open(out / "results.jsonl", "w") as f:
-        for r in rows:
-            f.write(json.dumps(r) + "\n")
-    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    write_jsonl(out / "results.jsonl", rows)
+    write_json(out / "summary.json", summary)
     table = [{"method": method, "modality": "all", "accuracy": round(summary["retrieval_accuracy"], 4),
               "queries": summary["queries"]}]
     for m, v in summary["by_modality"].items():

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import argparse
-import json
 import time
 from pathlib import Path
 
 import numpy as np
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.io import atomic_open, write_bytes, write_json
 from ragnav_jax.runs import default_run_dir, init_run
 from ragnav_jax.tables import write_table
 
@@ -28,7 +28,7 @@ def copy_scenes(files: list[Path], dest: Path) -> None:
             if target.read_bytes() != data:
                 raise UserError(f"{target}: already exists and differs from {f}; choose another --out")
             continue
-        target.write_bytes(data)
+        write_bytes(target, data)
 
 
 def scene_row(scene, result, cov, robot_radius: float = 0.0) -> dict:
@@ -67,6 +67,7 @@ def cmd_explore(args, cfg) -> int:
     from ragnav_jax.sim.explore import explore_scenes, explorer_for
     from ragnav_jax.sim.plot import save_exploration
     from ragnav_jax.sim.sensors import lidar_angles
+    from ragnav_jax.world.limits import check_explore_fits
     from ragnav_jax.world.scene import load_scene_set, scene_files
 
     run = Path(args.out) if args.out else default_run_dir(cfg, "explore")
@@ -75,6 +76,7 @@ def cmd_explore(args, cfg) -> int:
         raise UserError(f"no --scenes given and {source} does not exist")
     files = scene_files(source)
     scenes = load_scene_set(source)
+    check_explore_fits(scenes, cfg)  # sizes and memory, before anything is written or compiled
     stage = run / "explore"
     if (stage / "summary.json").exists() and not args.force:
         raise UserError(f"{stage}: already holds an exploration; pass --force to overwrite or choose another --out")
@@ -90,8 +92,7 @@ def cmd_explore(args, cfg) -> int:
         r.stream.save(stage / "streams" / f"{scene.name}.npz")
         cov = coverage(scene, r.true_pose, r.stream.lidar, angles, cfg.sim.robot_radius)
         maps = {k: getattr(r, k) for k in MAP_KEYS}
-        (stage / "maps").mkdir(parents=True, exist_ok=True)
-        with open(stage / "maps" / f"{scene.name}.npz", "wb") as f:
+        with atomic_open(stage / "maps" / f"{scene.name}.npz", "wb") as f:
             np.savez_compressed(f, covered=cov.covered, reachable=cov.reachable, **maps)
         row = scene_row(scene, r, cov, cfg.sim.robot_radius)
         rows.append(row)
@@ -120,7 +121,7 @@ def cmd_explore(args, cfg) -> int:
         "wall_seconds": round(seconds, 1),
         "scenes": rows,
     }
-    (stage / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    write_json(stage / "summary.json", summary)
     print((stage / "summary_table.md").read_text())
     print(
         f"explored {len(rows)} scenes in {seconds:.0f} s: coverage mean {summary['coverage']:.3f} "
@@ -132,6 +133,7 @@ def cmd_explore(args, cfg) -> int:
 
 def load_explored(run: Path, name: str) -> tuple[object, dict]:
     """(scene, map arrays) of one explored scene of a run folder."""
+    from ragnav_jax.sim.stream import NPZ_ERRORS
     from ragnav_jax.world.scene import load_scene_set
 
     path = run / "explore" / "maps" / f"{name}.npz"
@@ -145,7 +147,7 @@ def load_explored(run: Path, name: str) -> tuple[object, dict]:
     try:
         with np.load(path, allow_pickle=False) as z:
             maps = {k: z[k] for k in (*MAP_KEYS, "covered", "reachable")}
-    except (OSError, KeyError, ValueError) as e:
+    except NPZ_ERRORS as e:
         raise UserError(f"{path}: not a readable exploration map ({e.__class__.__name__})") from None
     return scenes[name], maps
 

@@ -294,7 +294,11 @@ def scene_inputs(scenes: Sequence[Scene], explorer: Explorer, seed: int) -> Scen
 
 def explorer_for(scenes: Sequence[Scene], cfg: Config) -> Explorer:
     """One explorer (template + grid) that fits every scene of a set. Explorers are cached by their
-    static shapes and settings, so scene sets that pad alike share one compilation in a process."""
+    static shapes and settings, so scene sets that pad alike share one compilation in a process. Scenes
+    beyond the configured sizes or the device's memory are a UserError here, before any compilation."""
+    from ragnav_jax.world.limits import check_explore_fits
+
+    check_explore_fits(scenes, cfg)
     walls, objects = slot_counts(scenes)
     spec = G.grid_spec(
         scenes, cfg.explore.map_resolution, cfg.explore.grid_resolution, cfg.sim.robot_radius + cfg.explore.clearance

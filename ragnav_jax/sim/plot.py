@@ -11,6 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
 
+from ragnav_jax.io import save_figure  # noqa: E402
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
 
@@ -56,6 +57,6 @@ def save_exploration(scene: Scene, explored: dict, out: str | Path, title: str |
     out.parent.mkdir(parents=True, exist_ok=True)
     ax = draw_exploration(scene, explored, title=title)
     ax.figure.tight_layout()
-    ax.figure.savefig(out, dpi=dpi)
+    save_figure(ax.figure, out, dpi=dpi)
     plt.close(ax.figure)
     return out

@@ -8,11 +8,16 @@ Object columns follow the order of `scene.objects`.
 from __future__ import annotations
 
 import dataclasses
+import zipfile
+import zlib
 from pathlib import Path
 
 import numpy as np
 
 from ragnav_jax.errors import UserError
+
+# What np.load raises on a missing, truncated (a killed write) or damaged .npz file, or one lacking a key.
+NPZ_ERRORS = (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error)
 
 STREAM_VERSION = 1
 
@@ -36,9 +41,10 @@ class ExplorationStream:
         assert self.lidar.shape[0] == T and self.lidar.shape[1] == self.lidar_angles.shape[0]
 
     def save(self, path: str | Path) -> Path:
+        from ragnav_jax.io import atomic_open
+
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with open(path, "wb") as f:
+        with atomic_open(path, "wb") as f:
             np.savez_compressed(
                 f, version=np.int32(STREAM_VERSION), scene=np.str_(self.scene), t=self.t, pose=self.pose,
                 lidar=self.lidar, lidar_angles=self.lidar_angles, visible=self.visible, distance=self.distance,
@@ -58,5 +64,5 @@ class ExplorationStream:
                     lidar_angles=z["lidar_angles"], visible=z["visible"], distance=z["distance"],
                     bearing=z["bearing"], object_ids=tuple(str(x) for x in z["object_ids"]),
                 )
-        except (OSError, KeyError, ValueError, AssertionError) as e:
+        except (*NPZ_ERRORS, AssertionError) as e:
             raise UserError(f"{path}: not a readable exploration stream ({e.__class__.__name__}: {e})") from None

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import json
 from collections import Counter
 from pathlib import Path
 
-from ragnav_jax.errors import UserError
+from ragnav_jax.cli import PositionalsAndOverrides
+from ragnav_jax.errors import UserError, printable
+from ragnav_jax.io import write_json
 from ragnav_jax.runs import default_run_dir, init_run
 from ragnav_jax.tables import write_table
 
@@ -55,7 +56,7 @@ def cmd_generate(args, cfg) -> int:
         "all_reachable": all(r["all_rooms_reachable"] and r["all_objects_reachable"] for r in rows),
         "scenes": rows,
     }
-    (stage / "summary.json").write_text(json.dumps(totals, indent=1) + "\n")
+    write_json(stage / "summary.json", totals)
     if args.plots:
         for s in scenes:
             save_floor_plan(s, stage / "plots" / f"{s.name}.png")
@@ -71,43 +72,32 @@ def cmd_validate(args, cfg) -> int:
 
     from ragnav_jax.errors import SceneError
     from ragnav_jax.world.blockers import reach_warnings
+    from ragnav_jax.world.limits import scene_size_problems
     from ragnav_jax.world.scene import load_scene, scene_files
 
-    bad = warned = 0
+    bad: list[SceneError] = []
+    warned = {"size": 0, "reachability": 0}
     for src in args.paths:
         for f in scene_files(src):
             try:
                 s = load_scene(f)
                 print(f"ok   {f} ({s.name}: {len(s.rooms)} rooms, {len(s.walls)} walls, {len(s.objects)} objects)")
             except SceneError as e:
-                print(f"FAIL {e}")
-                bad += 1
+                print(f"FAIL {printable(e)}")
+                bad.append(e)
                 continue
+            for problem in scene_size_problems(s, cfg.sim):
+                print(f"warning: {f}: {problem}: explore refuses it", file=sys.stderr)
+                warned["size"] += 1
             for line in reach_warnings(s, cfg.sim.robot_radius):
                 print(f"warning: {f}: {line}", file=sys.stderr)
-                warned += 1
+                warned["reachability"] += 1
     if bad:
-        raise UserError(f"{bad} invalid scene file(s)")
-    if warned and args.strict:
-        raise UserError(f"{warned} reachability warning(s) (--strict)")
+        more = f" (and {len(bad) - 1} more invalid scene file(s), listed above)" if len(bad) > 1 else ""
+        raise UserError(f"{bad[0]}{more}")
+    if any(warned.values()) and args.strict:
+        raise UserError(", ".join(f"{n} {kind} warning(s)" for kind, n in warned.items() if n) + " (--strict)")
     return 0
-
-
-class _PathsAndOverrides(argparse.Action):
-    """Splits validate's positionals into scene paths and KEY=VALUE config overrides.
-
-    The common parser's `overrides` positional comes first and takes all items but the last; this
-    action (run for the last) sorts them all again: an item with '=' that is not an existing path is
-    an override."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        items = [*(getattr(namespace, "overrides", None) or []), *values]
-        override = [("=" in x and not Path(x).exists()) for x in items]
-        namespace.overrides = [x for x, o in zip(items, override) if o]
-        paths = [x for x, o in zip(items, override) if not o]
-        if not paths:
-            parser.error("the following arguments are required: PATH")
-        setattr(namespace, self.dest, paths)
 
 
 def cmd_show_scene(args, cfg) -> int:
@@ -133,7 +123,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p = sub.add_parser(
         "validate", parents=[common], help="validate scene files or folders; warn about unreachable rooms and objects"
     )
-    p.add_argument("paths", nargs="+", metavar="PATH", action=_PathsAndOverrides)
+    p.add_argument("paths", nargs="+", metavar="PATH", action=PositionalsAndOverrides)
     p.add_argument("--strict", action="store_true", help="exit 2 on reachability warnings")
     p.set_defaults(func=cmd_validate)
 

@@ -11,6 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.patches as patches  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
+from ragnav_jax.io import save_figure  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
 
 ROOM_COLORS = plt.get_cmap("Pastel1").colors + plt.get_cmap("Pastel2").colors
@@ -62,6 +63,6 @@ def save_floor_plan(scene: Scene, out: str | Path, dpi: int = 150) -> Path:
     out.parent.mkdir(parents=True, exist_ok=True)
     ax = draw_floor_plan(scene)
     ax.figure.tight_layout()
-    ax.figure.savefig(out, dpi=dpi)
+    save_figure(ax.figure, out, dpi=dpi)
     plt.close(ax.figure)
     return out

@@ -338,10 +338,10 @@ def load_scene(path: str | Path) -> Scene:
 
 
 def save_scene(scene: Scene, path: str | Path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(scene_to_json(scene))
-    return path
+    """Writes the scene's JSON atomically (a full disk never leaves a truncated scene file)."""
+    from ragnav_jax.io import write_text
+
+    return write_text(path, scene_to_json(scene))
 
 
 def scene_files(source: str | Path) -> list[Path]:
