@@ -38,7 +38,7 @@ demo: install
 	$(VENV)/bin/ragnav build-memory --config configs/default.yaml --run $(DEMO_OUT) --force --quiet $(DEMO_SET)
 	$(VENV)/bin/ragnav episodes --config configs/default.yaml --scenes $(DEMO_OUT) --out $(DEMO_OUT)/episodes.jsonl --force --quiet $(DEMO_SET)
 	$(VENV)/bin/ragnav eval --config configs/default.yaml --scenes $(DEMO_OUT) --episodes $(DEMO_OUT)/episodes.jsonl \
-		--method $(DEMO_METHODS) --out $(DEMO_OUT) --quiet $(DEMO_SET)
+		--method $(DEMO_METHODS) --out $(DEMO_OUT) --force --quiet $(DEMO_SET)
 
 test: install
 	$(PY) -m pytest -q tests

@@ -28,10 +28,10 @@ def run_methods(args, methods: list[str]) -> dict[str, dict]:
     out = Path(args.out)
     episodes = args.episodes or str(Path(args.run) / "episodes.jsonl")
     todo = [m for m in methods if not (args.reuse and (out / "eval" / m.replace(":", "_") / "summary.json").is_file())]
-    if todo:  # one call: the executor is compiled once for every method
+    if todo:  # one call: the executor is compiled once for every method; OUT is this script's (--force)
         rc = cli_main(["eval", "--config", args.config, "--scenes", args.run, "--episodes", episodes,
                        "--method", ",".join(todo), "--stride", str(args.stride), "--out", str(out), "--quiet",
-                       *args.set])
+                       "--force", *args.set])
         if rc:
             raise SystemExit(f"ragnav eval --method {','.join(todo)} failed (exit {rc})")
     return {m: json.loads((out / "eval" / m.replace(":", "_") / "summary.json").read_text()) for m in methods}

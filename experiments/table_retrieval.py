@@ -40,7 +40,7 @@ def main(argv=None) -> int:
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.checkpoint import load_bank
     from ragnav_jax.memory.commands import bank_dir
-    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.memory.encoder import bank_embedder
     from ragnav_jax.retrieval.evaluate import evaluate_retrieval
     from ragnav_jax.retrieval.params import params_from_config
     from ragnav_jax.tables import write_table
@@ -49,9 +49,9 @@ def main(argv=None) -> int:
     cfg = load_config(args.config)
     run = Path(args.run)
     scenes = load_scene_set(run / "scenes")
-    bank = load_bank(bank_dir(run))
+    bank = load_bank(bank_dir(run), scenes)
     episodes = load_episodes(args.episodes, scenes)
-    emb = make_embedder(bank.metas[0].embedder, dim=cfg.memory.hashing_dim)
+    emb = bank_embedder(bank, cfg)
     rows, summaries = [], {}
     for m in args.methods:
         _, s = evaluate_retrieval(bank, scenes, episodes, emb, m, params_from_config(cfg.retrieval))

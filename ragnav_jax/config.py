@@ -18,6 +18,7 @@ from typing import Any
 import yaml
 
 from ragnav_jax.errors import ConfigError
+from ragnav_jax.filenames import name_problem
 
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
 EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
@@ -73,6 +74,8 @@ class WorldConfig:
         _check(0.0 <= self.extra_door_prob <= 1.0, "world.extra_door_prob", "must be in [0, 1]")
         _check(len(self.room_types) >= 1, "world.room_types", "must name at least one room type")
         _check(self.split in ("seen", "unseen"), "world.split", "must be seen or unseen")
+        bad_name = name_problem(f"{self.name_prefix}_000")  # scene names PREFIX_000, ... become file names
+        _check(bad_name is None, "world.name_prefix", f"scene name {bad_name}")
         if self.split == "unseen" and tuple(self.room_types) == ROOM_TYPES:
             from ragnav_jax.world.vocabulary import ROOM_TYPES_UNSEEN
 

@@ -123,3 +123,25 @@ def _remove_if_no_results(run: Path) -> None:
                 p.unlink()
         run.rmdir()
 
+
+def refuse_overwrite(paths, force: bool, flag: str = "--force") -> None:
+    """Raises UserError naming the first of `paths` that exists, unless `force`: a command checks every output
+    it is about to write before it starts, so earlier results are never replaced silently."""
+    from ragnav_jax.errors import UserError
+
+    existing = [Path(p) for p in paths if p is not None and Path(p).exists()]
+    if existing and not force:
+        more = f" (and {len(existing) - 1} more output(s))" if len(existing) > 1 else ""
+        raise UserError(f"{existing[0]}: exists{more}; pass {flag} to overwrite, or choose another output")
+
+
+def run_file(run_dir: str | Path, *parts: str) -> Path:
+    """RUN_DIR/parts[0]/parts[1]/..., each part one safe file name and the result inside RUN_DIR (UserError
+    otherwise): the path of every output whose name comes from user data (scene names, ids)."""
+    from ragnav_jax.errors import UserError
+    from ragnav_jax.filenames import inside, name_problem
+
+    for p in parts:
+        if problem := name_problem(p):
+            raise UserError(f"{Path(run_dir).joinpath(*parts)}: output name {problem}")
+    return inside(run_dir, Path(run_dir).joinpath(*parts))

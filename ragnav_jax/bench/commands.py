@@ -20,8 +20,6 @@ def cmd_bench(args, cfg) -> int:
     bad = [s for s in args.only or [] if s not in SECTIONS]
     if bad:
         raise UserError(f"--only: unknown section(s) {', '.join(bad)} (known: {', '.join(SECTIONS)})")
-    if args.scale <= 0:
-        raise UserError("--scale must be > 0")
     if args.merge:
         from ragnav_jax.bench.suite import merge_runs
 
@@ -43,13 +41,14 @@ def cmd_bench(args, cfg) -> int:
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.argtypes import positive_float
     from ragnav_jax.bench.profiles import SECTIONS
 
     p = sub.add_parser("bench", parents=[common], help="benchmark suite with peer comparisons -> RUN/bench.json, bench.md")
     p.add_argument("--out", required=True, help="run folder for bench.json, bench.md and plots")
     p.add_argument("--quick", action="store_true", help="smaller sizes (about 2 minutes on a 2-core CPU)")
     p.add_argument("--gpu", action="store_true", help="GPU-sized profile (1M nodes/queries, 16384 envs, 1024 scenes)")
-    p.add_argument("--scale", type=float, default=1.0, help="multiply every size of the profile (e.g. --gpu --scale 0.001)")
+    p.add_argument("--scale", type=positive_float, default=1.0, help="multiply every size of the profile (e.g. --gpu --scale 0.001)")
     p.add_argument("--only", nargs="+", metavar="SECTION", help=f"run only these sections ({', '.join(SECTIONS)})")
     p.add_argument("--notes", default="", help="free text stored in the report (e.g. machine load)")
     p.add_argument("--set", action="append", default=[], metavar="FIELD=VALUE",

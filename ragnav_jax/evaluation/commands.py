@@ -16,19 +16,16 @@ def load_retrieval_inputs(run: str | Path, episodes_file: str | Path, cfg):
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.checkpoint import load_bank
     from ragnav_jax.memory.commands import bank_dir
-    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.memory.encoder import bank_embedder
     from ragnav_jax.world.scene import load_scene_set
 
     run = Path(run)
     if not (run / "scenes").is_dir():
         raise UserError(f"{run}: no scenes/ folder (run generate, explore and build-memory first)")
     scenes = load_scene_set(run / "scenes")
-    bank = load_bank(bank_dir(run))
+    bank = load_bank(bank_dir(run), scenes)
     episodes = load_episodes(episodes_file, scenes)
-    embedder = make_embedder(bank.metas[0].embedder if bank.metas else cfg.memory.embedder,
-                             dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
-                             buckets=cfg.memory.token_buckets)
-    return bank, scenes, episodes, embedder
+    return bank, scenes, episodes, bank_embedder(bank, cfg)
 
 
 def cmd_sweep(args, cfg) -> int:
@@ -56,10 +53,11 @@ def cmd_sweep(args, cfg) -> int:
 def cmd_tune(args, cfg) -> int:
     from ragnav_jax.config import dump_yaml
     from ragnav_jax.evaluation.tune import run_tune
-    from ragnav_jax.runs import init_run
+    from ragnav_jax.runs import init_run, refuse_overwrite
 
-    bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
     out = Path(args.out)
+    refuse_overwrite([out / "summary.json", out / "tuned.yaml", out / "tune.md"], args.force)
+    bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
     init_run(out, cfg, "tune")
     summary, tuned_cfg = run_tune(cfg, bank, scenes, episodes, embedder, out, progress=not args.quiet)
     write_text(out / "tuned.yaml", "# ragnav tune: the input config with the tuned retrieval section "
@@ -76,11 +74,10 @@ def cmd_tune(args, cfg) -> int:
 def cmd_fit_verifier(args, cfg) -> int:
     from ragnav_jax.evaluation.fitting import fit_verifier, write_fitted
     from ragnav_jax.memory.encoder import make_embedder
-    from ragnav_jax.runs import init_run
+    from ragnav_jax.runs import init_run, refuse_overwrite
 
-    if args.scenes < 1:
-        raise UserError("--scenes: must be >= 1")
     out = Path(args.out)
+    refuse_overwrite([out / "fitted.json"], args.force)
     init_run(out, cfg, "fit-verifier")
     embedder = make_embedder(cfg.memory.embedder, dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
                              buckets=cfg.memory.token_buckets)
@@ -126,6 +123,8 @@ def cmd_show_episode(args, cfg) -> int:
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.argtypes import int_at_least, nonneg_int, positive_int
+
     p = sub.add_parser("show-episode", parents=[common],
                        help="video of one episode of an eval run (replayed): trajectory, candidates, camera, FOUND")
     p.add_argument("run", metavar="RUN", help="the eval's --out folder")
@@ -133,14 +132,15 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--episode", required=True, help="episode id (RUN/eval/<method>/episodes.jsonl)")
     p.add_argument("--out", required=True, help="video file (.gif or .mp4)")
     p.add_argument("--force", action="store_true", help="overwrite --out")
-    p.add_argument("--fps", type=int, default=8, help="frames per second (default 8)")
-    p.add_argument("--max-frames", type=int, default=160, help="frames at most (default 160)")
+    p.add_argument("--fps", type=positive_int, default=8, help="frames per second (default 8)")
+    p.add_argument("--max-frames", type=int_at_least(2), default=160, help="frames at most (default 160)")
     p.set_defaults(func=cmd_show_episode, overrides_allowed=False)
     p = sub.add_parser("fit-verifier", parents=[common],
                        help="fit the reflection's verifier thresholds on seen-split houses (writes OUT/fitted.json)")
     p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--scenes", type=int, default=8, help="seen-split training houses (default 8)")
-    p.add_argument("--seed", type=int, default=12345, help="seed of the training houses (not the evaluation's)")
+    p.add_argument("--scenes", type=positive_int, default=8, help="seen-split training houses (default 8)")
+    p.add_argument("--seed", type=nonneg_int, default=12345, help="seed of the training houses (not the evaluation's)")
+    p.add_argument("--force", action="store_true", help="overwrite an earlier OUT/fitted.json")
     p.set_defaults(func=cmd_fit_verifier)
     for name, func, text in (
         ("sweep", cmd_sweep, "retrieval accuracy over a hyperparameter grid (sweep section), one compiled call per chunk"),
@@ -152,4 +152,6 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
         p.add_argument("--out", required=True, help="output folder")
         if name == "sweep":
             p.add_argument("--fresh", action="store_true", help="discard checkpoints of an earlier sweep in --out")
+        else:
+            p.add_argument("--force", action="store_true", help="overwrite an earlier tuning in --out")
         p.set_defaults(func=func)

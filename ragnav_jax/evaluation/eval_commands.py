@@ -33,7 +33,7 @@ def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quie
     """(scenes, bank, streams by scene name, source run folder): explores and builds memory when missing."""
     from ragnav_jax.cli import main as cli_main
     from ragnav_jax.config import dump_yaml
-    from ragnav_jax.memory.checkpoint import load_bank
+    from ragnav_jax.memory.checkpoint import bank_exists, load_bank
     from ragnav_jax.memory.commands import bank_dir
     from ragnav_jax.sim.stream import ExplorationStream
     from ragnav_jax.world.scene import load_scene_set
@@ -44,9 +44,9 @@ def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quie
     run = src if (src / "scenes").is_dir() else None
     scenes = load_scene_set(run / "scenes" if run else src)
     if memory_arg:
-        bank = load_bank(memory_arg)
-    elif run is not None and bank_dir(run).exists():
-        bank = load_bank(bank_dir(run))
+        bank = load_bank(memory_arg, scenes)
+    elif run is not None and bank_exists(bank_dir(run)):
+        bank = load_bank(bank_dir(run), scenes)
     else:
         out.mkdir(parents=True, exist_ok=True)
         cfg_file = out / "config.eval-input.yaml"
@@ -57,12 +57,12 @@ def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quie
                            str(cfg_file), "--no-plots", *q])
             if rc:
                 raise UserError(f"exploring {src} failed (exit {rc})")
-        if not bank_dir(out).exists():
+        if not bank_exists(bank_dir(out)):
             rc = cli_main(["build-memory", "--run", str(out), "--config", str(cfg_file), *q])
             if rc:
                 raise UserError(f"building memory for {src} failed (exit {rc})")
         run = out
-        bank = load_bank(bank_dir(out))
+        bank = load_bank(bank_dir(out), scenes)
     streams = {}
     for base in [p for p in (run, out) if p is not None]:
         for s in scenes:
@@ -76,27 +76,30 @@ def cmd_eval(args, cfg) -> int:
     from ragnav_jax.evaluation.episode import NAV_METHODS, evaluate_navigation
     from ragnav_jax.evaluation.execute import make_executor
     from ragnav_jax.language.episodes import load_episodes
-    from ragnav_jax.memory.encoder import make_embedder
-    from ragnav_jax.runs import init_run
+    from ragnav_jax.memory.encoder import bank_embedder
+    from ragnav_jax.retrieval.commands import check_unparsed
+    from ragnav_jax.runs import init_run, refuse_overwrite
 
     out = Path(args.out)
     methods = list(NAV_METHODS) if args.method == "all" else [m.strip() for m in (args.method or cfg.eval.method).split(",")]
     bad = [m for m in methods if m not in NAV_METHODS]
     if bad:
         raise UserError(f"unknown method(s) {', '.join(bad)} (known: {', '.join(NAV_METHODS)}, all)")
-    load_episodes(args.episodes)  # format errors (file:line, exit 2) before any exploring
+    refuse_overwrite([out / "eval" / "table.md", out / "eval" / "summary.json",
+                      *(out / "eval" / m.replace(":", "_") / f for m in methods for f in ("episodes.jsonl", "summary.json"))],
+                     args.force)
+
+    def select(eps):  # an even subsample across scenes and modalities (--stride), then the first --limit
+        return eps[:: args.stride][: args.limit or None]
+
+    # format errors (file:line, exit 2) and unreadable instructions before any exploring
+    unparsed = check_unparsed(select(load_episodes(args.episodes)), args.allow_unparsed, args.episodes)
     scenes, bank, streams = prepare_inputs(args.scenes, args.memory, out, cfg, args.quiet)
-    episodes = load_episodes(args.episodes, scenes)
-    if args.stride > 1:  # an even subsample across scenes and modalities
-        episodes = episodes[:: args.stride]
-    if args.limit:
-        episodes = episodes[: args.limit]
+    episodes = select(load_episodes(args.episodes, scenes))
     if not episodes:
         raise UserError(f"{args.episodes}: no episodes")
     init_run(out, cfg, "eval")
-    embedder = make_embedder(bank.metas[0].embedder if bank.metas else cfg.memory.embedder,
-                             dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
-                             buckets=cfg.memory.token_buckets)
+    embedder = bank_embedder(bank, cfg)
     used = [s for s in scenes if s.name in {e.scene for e in episodes}]
     executor = make_executor(used, cfg)
     summaries, first = {}, None
@@ -104,7 +107,8 @@ def cmd_eval(args, cfg) -> int:
         rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, m, streams=streams,
                                             progress=not args.quiet, executor=executor)
         summary.update({"scenes": str(Path(args.scenes).resolve()), "episodes_file": str(Path(args.episodes).resolve()),
-                        "memory": args.memory and str(Path(args.memory).resolve())})  # what show-episode replays
+                        "memory": args.memory and str(Path(args.memory).resolve()),  # what show-episode replays
+                        "unparsed": unparsed})
         d = out / "eval" / m.replace(":", "_")
         write_jsonl(d / "episodes.jsonl", rows)
         write_json(d / "summary.json", summary)
@@ -167,14 +171,18 @@ def write_eval_tables(summaries: dict[str, dict], folder: Path) -> list[Path]:
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.argtypes import nonneg_int, positive_int
+    from ragnav_jax.retrieval.commands import add_batch_flags
+
     p = sub.add_parser("eval", parents=[common], help="closed-loop multi-goal navigation in MJX: success, SPL, distance, times")
     p.add_argument("--scenes", required=True, help="run folder (scenes/, explore/, memory/bank) or folder of scene files")
     p.add_argument("--episodes", required=True, help="episodes .jsonl file")
     p.add_argument("--method", help="method, comma-separated methods, or 'all' (default: eval.method)")
     p.add_argument("--memory", help="memory bank folder to reuse (default: SCENES/memory/bank, else built in --out)")
     p.add_argument("--out", required=True, help="output run folder")
-    p.add_argument("--limit", type=int, default=0, help="first N episodes only (0: all)")
-    p.add_argument("--stride", type=int, default=1, help="every N-th episode only (an even subsample)")
+    p.add_argument("--limit", type=nonneg_int, default=0, help="first N episodes only (0: all)")
+    p.add_argument("--stride", type=positive_int, default=1, help="every N-th episode only (an even subsample)")
+    add_batch_flags(p)
     p.set_defaults(func=cmd_eval)
 
 

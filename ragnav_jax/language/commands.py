@@ -44,7 +44,7 @@ def cmd_episodes(args, cfg) -> int:
         save_truth,
         validate_episode_dict,
     )
-    from ragnav_jax.runs import init_run
+    from ragnav_jax.runs import init_run, refuse_overwrite
     from ragnav_jax.tables import write_table
     from ragnav_jax.world.scene import load_scene_set
 
@@ -58,8 +58,10 @@ def cmd_episodes(args, cfg) -> int:
         raise UserError("--out FILE is needed when --scenes is not a run folder (RUN or RUN/scenes)")
     if out.suffix != ".jsonl":
         raise UserError(f"--out {out}: use a .jsonl file name")
-    if out.exists() and not args.force:
-        raise UserError(f"{out}: already exists; pass --force to overwrite")
+    truth_path, summary_path = out.with_name(out.stem + ".chains.jsonl"), out.with_name(out.stem + "_summary")
+    report_path = out.with_name(out.stem + ".agreement.json")
+    refuse_overwrite([out, truth_path, summary_path.with_suffix(".md"), summary_path.with_suffix(".csv"), report_path],
+                     args.force)
     if run is not None:
         init_run(run, cfg, "episodes")
     pairs = generate_episodes(scenes, cfg.episodes, cfg.seed, progress=not args.quiet)
@@ -68,11 +70,10 @@ def cmd_episodes(args, cfg) -> int:
     for k, p in enumerate(pairs, start=1):  # the schema promise, checked before writing
         validate_episode_dict(p.episode.to_dict(), "<generated>", k)
     save_episodes([p.episode for p in pairs], out)
-    truth_path = save_truth(pairs, out.with_name(out.stem + ".chains.jsonl"))
+    save_truth(pairs, truth_path)
     rows = episode_summary(pairs)
-    write_table(rows, out.with_name(out.stem + "_summary"))
+    write_table(rows, summary_path)
     report = parse_agreement(pairs)
-    report_path = out.with_name(out.stem + ".agreement.json")
     write_json(report_path, report)
     by_mod = {}
     for p in pairs:
@@ -118,6 +119,7 @@ def cmd_check_parse(args, cfg) -> int:
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    from ragnav_jax.argtypes import nonneg_int, unit_float
     from ragnav_jax.cli import PositionalsAndOverrides
 
     # The instruction is free text (it may hold "x=3.5"), so overrides come with --set instead of positionally.
@@ -142,6 +144,6 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
                    help="episodes .jsonl written by `ragnav episodes`")
     p.add_argument("--truth", help="ground-truth chains (default: EPISODES stem + .chains.jsonl)")
     p.add_argument("--llm", action="store_true", help="parse with the configured LLM endpoint (with fallback)")
-    p.add_argument("--show", type=int, default=20, help="disagreements to print")
-    p.add_argument("--min-rate", type=float, default=0.99, help="exit 1 below this agreement")
+    p.add_argument("--show", type=nonneg_int, default=20, help="disagreements to print")
+    p.add_argument("--min-rate", type=unit_float, default=0.99, help="exit 1 below this agreement")
     p.set_defaults(func=cmd_check_parse)

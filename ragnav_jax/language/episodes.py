@@ -32,6 +32,7 @@ import numpy as np
 
 from ragnav_jax.config import EpisodesConfig
 from ragnav_jax.errors import UserError
+from ragnav_jax.filenames import name_problem
 from ragnav_jax.io import write_jsonl
 from ragnav_jax.language import lexicon as L
 from ragnav_jax.language.parser import split_noun_phrase
@@ -164,6 +165,8 @@ def validate_episode_dict(d, source: str, line: int) -> Episode:
         err = jsonschema.exceptions.best_match(errors)
         where = "$" + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in err.absolute_path)
         raise EpisodeError(f"{source}: line {line}: {where}: {err.message[:200]}")
+    if problem := name_problem(d["id"]):  # an id may name per-episode output files
+        raise EpisodeError(f"{source}: line {line}: $.id: episode id {problem}")
     return Episode.from_dict(d)
 
 

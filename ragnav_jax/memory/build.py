@@ -28,7 +28,7 @@ from ragnav_jax.memory.keyposes import KeyframeRule, NodeObservation, node_senso
 from ragnav_jax.memory.paths import batched_shortest_paths, connected_components, edge_weights
 from ragnav_jax.memory.summarise import Summariser, leaf_label, llm_summary
 from ragnav_jax.memory.topomap import batched_edges, obstacles_from_arrays, obstacles_numpy
-from ragnav_jax.memory.types import DualBasisMemory, MemoryBank, MemoryMeta
+from ragnav_jax.memory.types import DualBasisMemory, MemoryBank, MemoryMeta, scene_fingerprint
 from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.arrays import pad_sizes, stack_scenes
 from ragnav_jax.world.scene import Scene
@@ -224,6 +224,7 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
             object_ids=tuple(o.id for o in scene.objects), sensor_names=sensor_names,
             num_components=int(comps[b].max() + 1) if n else 0, embedder=embedder.name, config=to_dict(m),
             caption_objects=tuple(c.objects for c in captions[b]), caption_phrases=tuple(c.phrases for c in captions[b]),
+            fingerprint=scene_fingerprint(scene, to_dict(m)),
         ))
     timings["summaries"] = time.perf_counter() - t0
     bar.update(1)

@@ -36,13 +36,13 @@ def load_run_inputs(run: Path):
 
 def cmd_build_memory(args, cfg) -> int:
     from ragnav_jax.memory.build import build_bank, memory_summary
-    from ragnav_jax.memory.checkpoint import save_bank
+    from ragnav_jax.memory.checkpoint import bank_exists, save_bank
     from ragnav_jax.runs import init_run
     from ragnav_jax.tables import write_table
 
     run = Path(args.run)
     out = bank_dir(run)
-    if out.exists() and not args.force:
+    if bank_exists(out) and not args.force:  # a folder left by an interrupted build is no bank
         raise UserError(f"{out}: a memory bank exists; pass --force to rebuild it")
     scenes, streams = load_run_inputs(run)
     init_run(run, cfg, "build-memory")
@@ -75,18 +75,25 @@ def cmd_build_memory(args, cfg) -> int:
 def cmd_show_memory(args, cfg) -> int:
     from ragnav_jax.memory.checkpoint import load_bank
     from ragnav_jax.memory.plot import save_memory_plot
-    from ragnav_jax.world.scene import load_scene
+    from ragnav_jax.runs import refuse_overwrite
+    from ragnav_jax.world.scene import load_scene_set
 
     run = Path(args.run)
     out = Path(args.out)
     if out.suffix.lower() not in (".png", ".pdf", ".svg"):
         raise UserError(f"--out {out}: use a .png, .pdf or .svg file name")
-    bank = load_bank(bank_dir(run))
+    refuse_overwrite([out], args.force)
+    if not (run / "scenes").is_dir():
+        raise UserError(f"{run}: no scenes/ folder (run generate, explore and build-memory first)")
+    scenes = {s.name: s for s in load_scene_set(run / "scenes")}
+    bank = load_bank(bank_dir(run), scenes.values())
     mem, meta = bank.scene(args.scene)
-    scene_file = run / "scenes" / f"{args.scene}.json"
-    if not scene_file.is_file():
-        raise UserError(f"{scene_file}: scene file missing")
-    save_memory_plot(load_scene(scene_file), mem, meta, out, level=args.level)
+    if args.scene not in scenes:
+        raise UserError(f"{run / 'scenes'}: no scene named '{args.scene}'")
+    levels = mem.num_levels
+    if not -levels <= args.level < levels:
+        raise UserError(f"--level {args.level}: this memory has levels 0 to {levels - 1} (negative: from the top)")
+    save_memory_plot(scenes[args.scene], mem, meta, out, level=args.level)
     print(f"memory of {args.scene} ({meta.num_nodes} nodes) drawn to {out}")
     return 0
 
@@ -102,4 +109,5 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--scene", required=True, help="scene name")
     p.add_argument("--out", required=True, help="picture file (.png, .pdf, .svg)")
     p.add_argument("--level", type=int, default=-1, help="forest level that colours the nodes (default: the top)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out file")
     p.set_defaults(func=cmd_show_memory)

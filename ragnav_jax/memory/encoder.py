@@ -300,3 +300,12 @@ def make_embedder(name: str, *, dim: int = 384, batch_size: int = 32, buckets: S
     if name == "hashing":
         return HashingEmbedder(dim=dim)
     raise UserError(f"unknown embedder '{name}' (known: minilm, hashing)")
+
+
+def bank_embedder(bank, cfg):
+    """The embedder for queries against `bank` (a MemoryBank): the kind and hashing size its memory was built
+    with (its metadata), so query and memory embeddings share one space; batching from `cfg.memory`."""
+    meta = bank.metas[0] if bank.metas else None
+    name = meta.embedder if meta else cfg.memory.embedder
+    dim = int(meta.config.get("hashing_dim", cfg.memory.hashing_dim)) if meta else cfg.memory.hashing_dim
+    return make_embedder(name, dim=dim, batch_size=cfg.memory.embed_batch, buckets=cfg.memory.token_buckets)

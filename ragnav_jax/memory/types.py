@@ -8,6 +8,8 @@ A bank stacks the scenes of a set with a leading axis B (same N, K, S, D, L for 
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+import json
 
 import jax
 import jax.numpy as jnp
@@ -74,6 +76,7 @@ class MemoryMeta:
     config: dict  # the memory config that built it
     caption_objects: tuple[tuple[int, ...], ...] = ()  # (n,) scene object index of each described instance
     caption_phrases: tuple[tuple[str, ...], ...] = ()  # (n,) the caption's phrase for each of them
+    fingerprint: str = ""  # scene_fingerprint of the scene and `config` it was built from ("" in older banks)
 
     def to_json(self) -> dict:
         return dataclasses.asdict(self)
@@ -88,8 +91,17 @@ class MemoryMeta:
             object_ids=tuple(d["object_ids"]), sensor_names=tuple(d["sensor_names"]),
             num_components=int(d["num_components"]), embedder=d["embedder"], config=dict(d["config"]),
             caption_objects=tuple(tuple(int(x) for x in v) for v in d.get("caption_objects", ())),
-            caption_phrases=tup(d.get("caption_phrases", ())),
+            caption_phrases=tup(d.get("caption_phrases", ())), fingerprint=str(d.get("fingerprint", "")),
         )
+
+
+def scene_fingerprint(scene, memory_config: dict) -> str:
+    """SHA-256 over the scene's canonical JSON (name, rooms, walls, objects, start pose) and the memory config
+    that built its memory: a bank records it per scene, and its consumers check it against their scenes."""
+    from ragnav_jax.world.scene import scene_to_dict
+
+    text = json.dumps({"scene": scene_to_dict(scene), "memory": memory_config}, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
 @dataclasses.dataclass(frozen=True)

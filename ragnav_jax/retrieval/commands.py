@@ -3,37 +3,60 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from ragnav_jax.errors import UserError
 from ragnav_jax.io import write_json, write_jsonl
 
 
+def check_unparsed(episodes, allow: bool, source) -> dict:
+    """summary.json's "unparsed" entry: the episodes whose instruction the parser cannot read, named on stderr
+    (one line) and refused with a UserError naming --allow-unparsed unless `allow` (they score as misses)."""
+    from ragnav_jax.retrieval.evaluate import unparsed
+
+    ids = unparsed(episodes)
+    if ids:
+        shown = ", ".join(ids[:5]) + (f", ... ({len(ids) - 5} more)" if len(ids) > 5 else "")
+        what = f"{source}: {len(ids)} of {len(episodes)} episodes have instructions the parser cannot read ({shown})"
+        if not allow:
+            raise UserError(f"{what}; pass --allow-unparsed to score them as misses")
+        print(f"ragnav: warning: {what}; scored as misses (--allow-unparsed)", file=sys.stderr)
+    return {"count": len(ids), "episodes": ids}
+
+
+def add_batch_flags(p: argparse.ArgumentParser) -> None:
+    """--allow-unparsed and --force of the batch commands that score an episodes file (retrieve, eval)."""
+    p.add_argument("--allow-unparsed", action="store_true",
+                   help="score episodes whose instruction the parser cannot read as misses (default: refuse; "
+                        "they are named on stderr and counted in summary.json either way)")
+    p.add_argument("--force", action="store_true", help="overwrite the results of an earlier run in --out")
+
+
 def cmd_retrieve(args, cfg) -> int:
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.checkpoint import load_bank
     from ragnav_jax.memory.commands import bank_dir
-    from ragnav_jax.memory.encoder import make_embedder
+    from ragnav_jax.memory.encoder import bank_embedder
     from ragnav_jax.retrieval.evaluate import evaluate_retrieval
     from ragnav_jax.retrieval.params import params_from_config
-    from ragnav_jax.runs import init_run
+    from ragnav_jax.runs import init_run, refuse_overwrite
     from ragnav_jax.tables import write_table
     from ragnav_jax.world.scene import load_scene_set
 
-    run = Path(args.run)
+    run, out = Path(args.run), Path(args.out)
+    refuse_overwrite([out / "summary.json", out / "results.jsonl", out / "summary.md", out / "summary.csv"], args.force)
     if not (run / "scenes").is_dir():
         raise UserError(f"{run}: no scenes/ folder (run generate, explore and build-memory first)")
     scenes = load_scene_set(run / "scenes")
-    bank = load_bank(bank_dir(run))
+    bank = load_bank(bank_dir(run), scenes)
     episodes = load_episodes(args.episodes, scenes)
+    unparsed = check_unparsed(episodes, args.allow_unparsed, args.episodes)
     method = args.method or cfg.retrieval.method
-    embedder = make_embedder(bank.metas[0].embedder if bank.metas else cfg.memory.embedder,
-                             dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
-                             buckets=cfg.memory.token_buckets)
-    out = Path(args.out)
+    embedder = bank_embedder(bank, cfg)
     init_run(out, cfg, "retrieve")
     rows, summary = evaluate_retrieval(bank, scenes, episodes, embedder, method, params_from_config(cfg.retrieval))
-    summary.update({"run": str(run), "episodes_file": str(args.episodes)})
+    summary.update({"run": str(run), "episodes_file": str(args.episodes), "unparsed": unparsed})
     write_jsonl(out / "results.jsonl", rows)
     write_json(out / "summary.json", summary)
     table = [{"method": method, "modality": "all", "accuracy": round(summary["retrieval_accuracy"], 4),
@@ -55,4 +78,5 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--episodes", required=True, help="episodes .jsonl file")
     p.add_argument("--method", choices=METHODS, help="method (default: retrieval.method from the config)")
     p.add_argument("--out", required=True, help="output folder")
+    add_batch_flags(p)
     p.set_defaults(func=cmd_retrieve)

@@ -16,6 +16,7 @@ reported apart (`compile_s`).
 from __future__ import annotations
 
 import dataclasses
+import functools
 import time
 from collections import defaultdict
 from collections.abc import Sequence
@@ -167,14 +168,23 @@ def prepare_batch(
     return batch, BatchMeta(tuple(items), tuple(slots), mods, totals, tuple(imetas), embed_ms)
 
 
+@functools.lru_cache(maxsize=1 << 16)
+def _subgoals(instruction: str) -> tuple[Subgoal, ...] | None:
+    try:
+        return parse_instruction(instruction).subgoals
+    except ParseError:
+        return None
+
+
 def parse_all(episodes: Sequence[Episode]) -> list[tuple[Subgoal, ...] | None]:
-    out = []
-    for ep in episodes:
-        try:
-            out.append(parse_instruction(ep.instruction).subgoals)
-        except ParseError:
-            out.append(None)
-    return out
+    """Each episode's parsed subgoals, None where the parser cannot read the instruction (cached per text:
+    a batch command checks for unreadable instructions before it scores them)."""
+    return [_subgoals(ep.instruction) for ep in episodes]
+
+
+def unparsed(episodes: Sequence[Episode]) -> list[str]:
+    """Ids of the episodes whose instruction the parser cannot read."""
+    return [ep.id for ep, sgs in zip(episodes, parse_all(episodes)) if sgs is None]
 
 
 def evaluate_retrieval(

@@ -10,7 +10,7 @@ import numpy as np
 
 from ragnav_jax.errors import UserError
 from ragnav_jax.io import atomic_open, write_bytes, write_json
-from ragnav_jax.runs import default_run_dir, init_run
+from ragnav_jax.runs import default_run_dir, init_run, refuse_overwrite, run_file
 from ragnav_jax.tables import write_table
 
 MAP_KEYS = ("origin", "resolution", "grid_factor", "seen", "hit", "viewed", "frontier", "blocked", "true_pose")
@@ -89,15 +89,16 @@ def cmd_explore(args, cfg) -> int:
     angles = lidar_angles(cfg.sim)
     rows = []
     for scene, r in zip(scenes, results):
-        r.stream.save(stage / "streams" / f"{scene.name}.npz")
+        r.stream.save(run_file(run, "explore", "streams", f"{scene.name}.npz"))
         cov = coverage(scene, r.true_pose, r.stream.lidar, angles, cfg.sim.robot_radius)
         maps = {k: getattr(r, k) for k in MAP_KEYS}
-        with atomic_open(stage / "maps" / f"{scene.name}.npz", "wb") as f:
+        map_file = run_file(run, "explore", "maps", f"{scene.name}.npz")
+        with atomic_open(map_file, "wb") as f:
             np.savez_compressed(f, covered=cov.covered, reachable=cov.reachable, **maps)
         row = scene_row(scene, r, cov, cfg.sim.robot_radius)
         rows.append(row)
         if args.plots:
-            save_exploration(scene, {**maps}, stage / "plots" / f"{scene.name}.png",
+            save_exploration(scene, {**maps}, run_file(run, "explore", "plots", f"{scene.name}.png"),
                              title=f"{scene.name}: coverage {row['coverage']:.3f}, path {row['path_length_m']:.0f} m")
     write_table([{k: " ".join(v) if isinstance(v, list) else v for k, v in r.items()} for r in rows], stage / "summary_table")
     reach = sum(r["reachable_area_m2"] for r in rows)
@@ -159,6 +160,7 @@ def cmd_show_trajectory(args, cfg) -> int:
     out = Path(args.out)
     if out.suffix.lower() not in (".png", ".pdf", ".svg"):
         raise UserError(f"--out {out}: use a .png, .pdf or .svg file name")
+    refuse_overwrite([out], args.force)
     scene, maps = load_explored(run, args.scene)
     cov = maps["covered"][maps["reachable"]].mean() if maps["reachable"].any() else 1.0
     save_exploration(scene, maps, out, title=f"{scene.name}: coverage {cov:.3f}")
@@ -178,4 +180,5 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("run", metavar="RUN")
     p.add_argument("--scene", required=True, help="scene name")
     p.add_argument("--out", required=True, help="picture file (.png, .pdf, .svg)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out file")
     p.set_defaults(func=cmd_show_trajectory, overrides_allowed=False)

@@ -9,7 +9,7 @@ from pathlib import Path
 from ragnav_jax.cli import PositionalsAndOverrides
 from ragnav_jax.errors import UserError, printable
 from ragnav_jax.io import write_json
-from ragnav_jax.runs import default_run_dir, init_run
+from ragnav_jax.runs import default_run_dir, init_run, refuse_overwrite, run_file
 from ragnav_jax.tables import write_table
 
 
@@ -45,7 +45,7 @@ def cmd_generate(args, cfg) -> int:
     init_run(run, cfg, "generate")
     scenes = generate_scenes(cfg.world, cfg.seed, progress=not args.quiet)
     for s in scenes:
-        save_scene(s, scenes_dir / f"{s.name}.json")
+        save_scene(s, run_file(run, "scenes", f"{s.name}.json"))
     stage = run / "generate"
     rows = [scene_summary(s) for s in scenes]
     write_table(rows, stage / "scenes_summary")
@@ -59,7 +59,7 @@ def cmd_generate(args, cfg) -> int:
     write_json(stage / "summary.json", totals)
     if args.plots:
         for s in scenes:
-            save_floor_plan(s, stage / "plots" / f"{s.name}.png")
+            save_floor_plan(s, run_file(run, "generate", "plots", f"{s.name}.png"))
     print((stage / "scenes_summary.md").read_text())
     print(f"{len(scenes)} scenes written to {scenes_dir}" + (f"; floor plans in {stage / 'plots'}" if args.plots else ""))
     return 0
@@ -108,6 +108,7 @@ def cmd_show_scene(args, cfg) -> int:
     out = Path(args.out)
     if out.suffix.lower() not in (".png", ".pdf", ".svg"):
         raise UserError(f"--out {out}: use a .png, .pdf or .svg file name")
+    refuse_overwrite([out], args.force)
     save_floor_plan(scene, out)
     print(f"floor plan of {scene.name} written to {out}")
     return 0
@@ -130,4 +131,5 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p = sub.add_parser("show-scene", parents=[common], help="draw a scene's floor plan")
     p.add_argument("file")
     p.add_argument("--out", required=True, help="picture file (.png, .pdf, .svg)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out file")
     p.set_defaults(func=cmd_show_scene, overrides_allowed=False)

@@ -20,6 +20,7 @@ from typing import Any
 import jsonschema
 
 from ragnav_jax.errors import SceneError
+from ragnav_jax.filenames import name_problem
 
 FORMAT = "ragnav-scene/1"
 DEFAULT_OBJECT_SIZE = (0.5, 0.5, 0.5)
@@ -232,6 +233,8 @@ def scene_from_dict(data: Any, source: str = "<scene>") -> Scene:
     """Validates plain data (as parsed from JSON) and builds a Scene; raises SceneError."""
     _finite_check(data, source)
     _schema_check(data, source)
+    if problem := name_problem(data["name"]):  # RUN/scenes/<name>.json, streams, maps and plots are named after it
+        raise SceneError(source, "$.name", f"scene name {problem}")
     rooms = tuple(Room(r["id"], r["type"], tuple(r["min"]), tuple(r["max"])) for r in data["rooms"])
     walls = tuple(
         Wall(
