@@ -117,6 +117,7 @@ ROWS = [
         "$.start"),
     Row("scene wrong format", {S: scene(lambda d: d.update(format="ragnav-scene/9"))}, ["validate", S], "$.format"),
     Row("scene top level list", {S: b"[]"}, ["validate", S], S),
+    Row("scene name with a path", {S: scene(lambda d: d.update(name="../../x"))}, ["validate", S], "$.name"),
     Row("scene too many objects", {S: scene()}, ["explore", "--scenes", S, "--out", "out", "sim.max_objects=10"],
         "sim.max_objects", writes="out"),
     Row("scene exceeds memory", {S: scene()}, ["explore", "--scenes", S, "--out", "out", "explore.max_steps=10000000000"],
@@ -155,6 +156,8 @@ ROWS = [
                                                  "memory.embedder=hashing"], "world.split", writes="out"),
     # --- command-line arguments -----------------------------------------------------------------------
     Row("bad method", {}, ["retrieve", "--run", "r", "--episodes", E, "--out", "o", "--method", "bogus"], "--method"),
+    Row("negative --limit", {}, ["eval", "--scenes", "r", "--episodes", E, "--out", "o", "--limit", "-1"], "--limit"),
+    Row("zero --stride", {}, ["eval", "--scenes", "r", "--episodes", E, "--out", "o", "--stride", "0"], "--stride"),
     Row("missing required", {}, ["retrieve", "--episodes", E, "--out", "o"], "--run"),
     Row("stray argument", {}, ["generate", "--out", "out", "stray"], "stray", writes="out"),
     Row("unknown option", {}, ["generate", "--bogus"], "--bogus"),
@@ -168,8 +171,14 @@ ROWS = [
         setup=lambda root: shutil.rmtree(root / "run" / "memory")),
     Row("corrupted array sum", {"run": RUN, E: episodes()}, RETRIEVE, "field 'adjacency' is corrupted", writes="out",
         setup=_meta_edit(lambda m: m["fields"]["adjacency"].update(sha256="0" * 64))),
+    Row("edited bank metadata", {"run": RUN, E: episodes()}, RETRIEVE, "meta.json", writes="out",
+        setup=lambda root: (root / "run/memory/bank/meta.json").write_text(
+            (root / "run/memory/bank/meta.json").read_text().replace('"num_nodes": ', '"num_nodes": 1'))),
     Row("corrupted bank arrays", {"run": RUN, E: episodes()}, RETRIEVE, "run/memory/bank", writes="out",
         setup=_flip_arrays),
+    Row("bank of another scene", {"run": RUN, E: episodes()}, RETRIEVE, "fingerprint", writes="out",
+        setup=lambda root: (root / "run/scenes/apartment.json").write_bytes(
+            scene(lambda d: d["objects"].reverse()))),
     # --- interrupted runs -----------------------------------------------------------------------------
     Row("stream cut short by a kill", {"run": RUN}, ["build-memory", "--run", "run", "--force", "--quiet"],
         "apartment.npz", writes="run/memory",
