@@ -17,7 +17,6 @@ import time
 import traceback
 from collections.abc import Callable
 from importlib import metadata
-from pathlib import Path
 from typing import NamedTuple
 
 from ragnav_jax.runs import package_versions
@@ -230,6 +229,7 @@ def report(doc: dict) -> str:
 
 def cmd_doctor(args, cfg) -> int:
     from ragnav_jax.errors import UserError
+    from ragnav_jax.io import write_text
 
     only = tuple(args.only or CHECKS)
     bad = [c for c in only if c not in CHECKS]
@@ -242,7 +242,7 @@ def cmd_doctor(args, cfg) -> int:
     else:
         print(report(doc))
         if args.json:
-            Path(args.json).write_text(text + "\n")
+            write_text(args.json, text + "\n")
     if not doc["ok"]:
         print(f"ragnav doctor: failed check(s): {', '.join(doc['failed'])}", file=sys.stderr)
     return 0 if doc["ok"] else 1

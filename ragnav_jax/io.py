@@ -56,6 +56,24 @@ def atomic_open(path: str | Path, mode: str = "w") -> Iterator[IO[Any]]:
         raise
 
 
+@contextlib.contextmanager
+def atomic_path(path: str | Path) -> Iterator[Path]:
+    """A temporary file name beside `path`, with its suffix, for writers that take a file name (an animation
+    encoder); on a clean exit the file written there replaces `path`, and nothing is left when the body raises."""
+    path = Path(path)
+    tmp = path.with_name(f".{path.stem}.{secrets.token_hex(4)}{TMP_SUFFIX}{path.suffix}")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        yield tmp
+        os.replace(tmp, path)
+    except BaseException as e:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        if isinstance(e, OSError):
+            raise named(e, path, tmp) from None
+        raise
+
+
 def write_text(path: str | Path, text: str) -> Path:
     """Writes `text` to `path` atomically; returns the path."""
     with atomic_open(path, "w") as f:

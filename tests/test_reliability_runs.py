@@ -148,11 +148,11 @@ def _with_unreadable_instructions(run, tmp_path):
     return str(path)
 
 
-@pytest.mark.parametrize("command", ["retrieve", "eval"])
+@pytest.mark.parametrize("command", ["retrieve", "eval", "sweep", "tune"])
 def test_unreadable_instructions_are_refused_without_the_flag(run, tmp_path, capsys, command):
     eps = _with_unreadable_instructions(run, tmp_path)
-    argv = (["retrieve", "--run", str(run)] if command == "retrieve" else
-            ["eval", "--scenes", str(run), "--method", "ragnav"])
+    argv = {"retrieve": ["retrieve", "--run", str(run)], "eval": ["eval", "--scenes", str(run), "--method", "ragnav"],
+            "sweep": ["sweep", "--run", str(run)], "tune": ["tune", "--run", str(run)]}[command]
     line = assert_refused([*argv, "--episodes", eps, "--out", str(tmp_path / "out"), "--quiet", HASHING],
                           capsys, tmp_path, "--allow-unparsed", "bad-empty", "bad-long", eps)
     assert "2 of 8 episodes" in line

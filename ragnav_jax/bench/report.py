@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ragnav_jax.io import save_figure, write_text
+
 
 def _t(s: float) -> str:
     """Seconds as a short human figure."""
@@ -86,7 +88,7 @@ def _plots(doc: dict, out: Path) -> list[str]:
         ax.set(xlabel="memory nodes", ylabel="ms per query", title="Retrieval latency")
         ax.legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(out / "retrieval.png", dpi=110)
+        save_figure(fig, out / "retrieval.png", dpi=110)
         plt.close(fig)
         made.append("retrieval.png")
     sim = secs.get("simulation", {})
@@ -98,7 +100,7 @@ def _plots(doc: dict, out: Path) -> list[str]:
         ax.set(xlabel="parallel environments", ylabel="env-steps / s", title="Simulation (physics + lidar + visibility)")
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(out / "simulation.png", dpi=110)
+        save_figure(fig, out / "simulation.png", dpi=110)
         plt.close(fig)
         made.append("simulation.png")
     e2e = secs.get("end_to_end", {})
@@ -124,7 +126,7 @@ def _plots(doc: dict, out: Path) -> list[str]:
             a2.set_xscale("log")
         a1.legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(out / fname, dpi=110)
+        save_figure(fig, out / fname, dpi=110)
         plt.close(fig)
         made.append(fname)
     return made
@@ -225,5 +227,5 @@ def write_report(doc: dict, out: Path) -> Path:
         L += ["## Plots", ""] + [f"![{f}]({f})" for f in made if f != "simulation.png"] + [""]
     L += ["## README table", ""] + readme_table(doc) + [""]
     path = out / "bench.md"
-    path.write_text("\n".join(L) + "\n")
+    write_text(path, "\n".join(L) + "\n")
     return path

@@ -15,6 +15,7 @@ from pathlib import Path
 from ragnav_jax.bench.profiles import SECTIONS, Profile
 from ragnav_jax.bench.sections import SECTION_FUNCS, Unavailable
 from ragnav_jax.bench.timing import machine, max_rss_mb
+from ragnav_jax.io import write_text
 
 NOTE = ("Timings are host wall clock around calls that block on their results, after warm-up, the median of "
         "several repeats with min and max; compile time is reported apart. Every ratio is peer time / our time on "
@@ -59,7 +60,7 @@ def run_suite(out: str | Path, profile: Profile, only: Sequence[str] = (), log: 
         doc["comparisons"] = [c for s in doc["sections"].values() for c in s.get("comparisons", [])]
         doc["total_wall_s"] = time.perf_counter() - t_all
         doc["process_max_rss_mb"] = max_rss_mb()
-        (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+        write_text(out / "bench.json", json.dumps(_jsonable(doc), indent=1) + "\n")
 
     t_all = time.perf_counter()
     for name in names:
@@ -144,7 +145,7 @@ def merge_runs(out: str | Path, parts: Sequence[str | Path], log: Callable[[str]
     doc["notes"] = " ".join(dict.fromkeys(d.get("notes", "") for d in docs if d.get("notes")))
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "bench.json").write_text(json.dumps(_jsonable(doc), indent=1) + "\n")
+    write_text(out / "bench.json", json.dumps(_jsonable(doc), indent=1) + "\n")
     write_report(doc, out)
     log(f"merged {len(docs)} runs into {out / 'bench.json'} and {out / 'bench.md'}")
     return doc

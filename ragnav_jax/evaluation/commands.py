@@ -30,16 +30,18 @@ def load_retrieval_inputs(run: str | Path, episodes_file: str | Path, cfg):
 
 def cmd_sweep(args, cfg) -> int:
     from ragnav_jax.evaluation.sweep import run_sweep
+    from ragnav_jax.retrieval.commands import check_unparsed
     from ragnav_jax.retrieval.evaluate import prepare_batch
     from ragnav_jax.runs import init_run
 
     bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
+    unparsed = check_unparsed(episodes, args.allow_unparsed, args.episodes)
     out = Path(args.out)
     init_run(out, cfg, "sweep")
     batch, meta = prepare_batch(bank, scenes, episodes, embedder)
     rows, summary = run_sweep(cfg, batch, meta, out, fresh=args.fresh, progress=not args.quiet,
                               log=lambda m: print(m, flush=True), bank=bank, scenes=scenes)
-    summary.update({"run": str(args.run), "episodes_file": str(args.episodes)})
+    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "unparsed": unparsed})
     write_json(out / "summary.json", summary)
     for key in ("best", "best_plan"):
         for v, b in summary.get(key, {}).items():
@@ -53,16 +55,19 @@ def cmd_sweep(args, cfg) -> int:
 def cmd_tune(args, cfg) -> int:
     from ragnav_jax.config import dump_yaml
     from ragnav_jax.evaluation.tune import run_tune
+    from ragnav_jax.retrieval.commands import check_unparsed
     from ragnav_jax.runs import init_run, refuse_overwrite
 
     out = Path(args.out)
     refuse_overwrite([out / "summary.json", out / "tuned.yaml", out / "tune.md"], args.force)
     bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
+    unparsed = check_unparsed(episodes, args.allow_unparsed, args.episodes)
     init_run(out, cfg, "tune")
     summary, tuned_cfg = run_tune(cfg, bank, scenes, episodes, embedder, out, progress=not args.quiet)
     write_text(out / "tuned.yaml", "# ragnav tune: the input config with the tuned retrieval section "
                                    "(use with --config)\n" + dump_yaml(tuned_cfg))
-    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "tuned_config": str(out / "tuned.yaml")})
+    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "tuned_config": str(out / "tuned.yaml"),
+                    "unparsed": unparsed})
     write_json(out / "summary.json", summary)
     print((out / "tune.md").read_text())
     h = summary["held_out"]
@@ -124,6 +129,7 @@ def cmd_show_episode(args, cfg) -> int:
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     from ragnav_jax.argtypes import int_at_least, nonneg_int, positive_int
+    from ragnav_jax.retrieval.commands import add_batch_flags
 
     p = sub.add_parser("show-episode", parents=[common],
                        help="video of one episode of an eval run (replayed): trajectory, candidates, camera, FOUND")
@@ -150,8 +156,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
         p.add_argument("--run", required=True, help="run folder with scenes/ and memory/bank")
         p.add_argument("--episodes", required=True, help="episodes .jsonl file")
         p.add_argument("--out", required=True, help="output folder")
+        add_batch_flags(p, force=name == "tune")
         if name == "sweep":
             p.add_argument("--fresh", action="store_true", help="discard checkpoints of an earlier sweep in --out")
-        else:
-            p.add_argument("--force", action="store_true", help="overwrite an earlier tuning in --out")
         p.set_defaults(func=func)

@@ -24,6 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from ragnav_jax.evaluation.plot import LEG_COLORS  # noqa: E402
+from ragnav_jax.io import atomic_path  # noqa: E402
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
 
@@ -129,7 +130,8 @@ def save_episode_video(scene: Scene, row: dict, out: str | Path, fps: int = 8, m
         matplotlib.rcParams["animation.ffmpeg_path"] = exe
         writer = FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
     try:
-        anim.save(out, writer=writer, dpi=dpi)
+        with atomic_path(out) as tmp:
+            anim.save(tmp, writer=writer, dpi=dpi)
     finally:
         plt.close(fig)
     return len(frames)

@@ -25,12 +25,14 @@ def check_unparsed(episodes, allow: bool, source) -> dict:
     return {"count": len(ids), "episodes": ids}
 
 
-def add_batch_flags(p: argparse.ArgumentParser) -> None:
-    """--allow-unparsed and --force of the batch commands that score an episodes file (retrieve, eval)."""
+def add_batch_flags(p: argparse.ArgumentParser, force: bool = True) -> None:
+    """--allow-unparsed and (with `force`) --force of the batch commands that score an episodes file
+    (retrieve, eval, tune; sweep resumes instead of overwriting)."""
     p.add_argument("--allow-unparsed", action="store_true",
                    help="score episodes whose instruction the parser cannot read as misses (default: refuse; "
                         "they are named on stderr and counted in summary.json either way)")
-    p.add_argument("--force", action="store_true", help="overwrite the results of an earlier run in --out")
+    if force:
+        p.add_argument("--force", action="store_true", help="overwrite the results of an earlier run in --out")
 
 
 def cmd_retrieve(args, cfg) -> int:
