@@ -30,23 +30,15 @@ def named(e: OSError, path: str | Path, tmp: str | Path | None = None) -> OSErro
 
 
 @contextlib.contextmanager
-def atomic_open(path: str | Path, mode: str = "w") -> Iterator[IO[Any]]:
-    """Opens a temporary file beside `path` for writing ('w' text in UTF-8, or 'wb'); on a clean exit it
-    replaces `path`. Creates missing parent folders. Nothing is left behind when the body raises."""
+def atomic_path(path: str | Path) -> Iterator[Path]:
+    """A temporary file name beside `path` (with its suffix, for writers that pick a format by it, such as an
+    animation encoder); on a clean exit the file written there replaces `path`. Creates missing parent
+    folders. Nothing is left behind when the body raises."""
     path = Path(path)
-    if mode not in ("w", "wb"):
-        raise ValueError(f"atomic_open: mode must be 'w' or 'wb', got {mode!r}")
-    tmp = path.with_name(f".{path.name}.{secrets.token_hex(4)}{TMP_SUFFIX}")
+    tmp = path.with_name(f".{path.stem}.{secrets.token_hex(4)}{TMP_SUFFIX}{path.suffix}")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)  # an error here names the folder it could not make
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # 0o666 & ~umask, as open() would
-    except OSError as e:
-        raise named(e, path, tmp) from None
-    try:
-        with open(fd, mode, **({} if "b" in mode else {"encoding": "utf-8"})) as f:
-            yield f
-            f.flush()
-            os.fsync(f.fileno())
+        yield tmp
         os.replace(tmp, path)
     except BaseException as e:
         with contextlib.suppress(OSError):
@@ -57,21 +49,17 @@ def atomic_open(path: str | Path, mode: str = "w") -> Iterator[IO[Any]]:
 
 
 @contextlib.contextmanager
-def atomic_path(path: str | Path) -> Iterator[Path]:
-    """A temporary file name beside `path`, with its suffix, for writers that take a file name (an animation
-    encoder); on a clean exit the file written there replaces `path`, and nothing is left when the body raises."""
-    path = Path(path)
-    tmp = path.with_name(f".{path.stem}.{secrets.token_hex(4)}{TMP_SUFFIX}{path.suffix}")
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        yield tmp
-        os.replace(tmp, path)
-    except BaseException as e:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        if isinstance(e, OSError):
-            raise named(e, path, tmp) from None
-        raise
+def atomic_open(path: str | Path, mode: str = "w") -> Iterator[IO[Any]]:
+    """Opens a temporary file beside `path` for writing ('w' text in UTF-8, or 'wb'), flushed to disk and
+    renamed onto `path` on a clean exit (`atomic_path`)."""
+    if mode not in ("w", "wb"):
+        raise ValueError(f"atomic_open: mode must be 'w' or 'wb', got {mode!r}")
+    with atomic_path(path) as tmp:
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # 0o666 & ~umask, as open() would
+        with open(fd, mode, **({} if "b" in mode else {"encoding": "utf-8"})) as f:
+            yield f
+            f.flush()
+            os.fsync(f.fileno())
 
 
 def write_text(path: str | Path, text: str) -> Path:

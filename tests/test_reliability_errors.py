@@ -33,7 +33,7 @@ def one_error_line(err: str) -> str:
 
 def leftovers(folder: Path) -> list[str]:
     """Temporary files of atomic writes still in `folder` (there must be none)."""
-    return sorted(p.name for p in folder.rglob(f"*{rio.TMP_SUFFIX}"))
+    return sorted(p.name for p in folder.rglob(f"*{rio.TMP_SUFFIX}*"))
 
 
 # ----------------------------------------------------------------------------------------------------
