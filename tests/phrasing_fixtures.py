@@ -2,12 +2,19 @@
 them, seeded generators and hypothesis strategies for goals. Each test file keeps its own, independent
 readers of numbers, coordinates and order words: those are what the tests compare the templates against."""
 
+import re
+
 import numpy as np
 from hypothesis import strategies as st
 
 from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Target
 
 STATES = ("switched on", "switched off", "open", "closed", "empty", "full")
+
+
+def word(w):
+    """Regex for w as a whole word ('running' in 'hottest-running' is part of a prefix, not the state)."""
+    return rf"(?<![\w-]){re.escape(w)}(?![\w-])"
 
 
 def T(head, attrs=(), rels=()):

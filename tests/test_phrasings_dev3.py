@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from phrasing_fixtures import SENSORS as _sensors
 from phrasing_fixtures import gen
 from phrasing_fixtures import phrases as _phrases
+from phrasing_fixtures import word as _word
 
 from ragnav_jax.language.phrasings import STATE_VALUES
 from ragnav_jax.language.phrasings_dev3 import (
@@ -27,10 +28,6 @@ ROOMS = ("kitchen", "living room", "games room", "pantry")
 
 def T(head, attrs=(), rels=()):
     return Target(" ".join(a for a in (*attrs, head)), head, tuple(attrs), tuple(Relation(t, a) for t, a in rels))
-
-
-def _word(w):
-    return rf"(?<![\w-]){re.escape(w)}(?![\w-])"
 
 
 # ----------------------------------------------------------------------------------------------------

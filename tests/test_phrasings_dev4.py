@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from phrasing_fixtures import SENSORS as _sensors
 from phrasing_fixtures import STATES, T, gen
 from phrasing_fixtures import phrases as _phrases
+from phrasing_fixtures import word as _word
 
 from ragnav_jax.language.phrasings_dev4 import (
     hint_text_dev4,
@@ -23,10 +24,6 @@ from ragnav_jax.language.types import RELATION_TYPES, SensorConstraint, Subgoal
 HEADS = ("lamp", "sofa", "kettle", "fern", "coffee machine", "hi-fi speaker", "heater", "drums", "night-light")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal")
 ROOMS = ("kitchen", "living room", "games room", "pantry")
-
-
-def _word(w):
-    return rf"(?<![\w-]){re.escape(w)}(?![\w-])"
 
 
 # ----------------------------------------------------------------------------------------------------

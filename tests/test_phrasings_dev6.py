@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from phrasing_fixtures import SENSORS as _sensors
 from phrasing_fixtures import STATES, T, gen, target_strategy
 from phrasing_fixtures import phrases as _phrases
+from phrasing_fixtures import word as _word
 
 from ragnav_jax.language.phrasings_dev6 import (
     hint_text_dev6,
@@ -24,10 +25,6 @@ HEADS = ("lamp", "sofa", "amplifier", "snake plant", "coffee machine", "hi-fi sp
          "night-light", "ping-pong table")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal", "lacquered")
 ROOMS = ("kitchen", "living room", "games room", "pantry", "laundry room")
-
-
-def _word(w):
-    return rf"(?<![\w-]){re.escape(w)}(?![\w-])"
 
 
 # ----------------------------------------------------------------------------------------------------

@@ -9,6 +9,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from phrasing_fixtures import STATES, T, gen
+from phrasing_fixtures import word as _word
 
 from ragnav_jax.language.phrasings_dev7 import (
     hint_text_dev7,
@@ -22,10 +23,6 @@ HEADS = ("lamp", "sofa", "amplifier", "snake plant", "coffee machine", "hi-fi sp
          "ping-pong table", "chest freezer")
 MODS = ("red", "oak", "gold-framed", "grey fabric", "king-size", "teal", "lacquered", "small")
 ROOMS = ("kitchen", "living room", "games room", "pantry", "laundry room", "study")
-
-
-def _word(w):
-    return rf"(?<![\w-]){re.escape(w)}(?![\w-])"
 
 
 # ----------------------------------------------------------------------------------------------------
