@@ -471,6 +471,8 @@ class EvalConfig:
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
     closest_view: bool = True  # RAGNav's legs end at the key pose that recorded the retrieved instance from
     # closest, not at the best-scoring one (see README)
+    ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
+    # goals naming nothing it knows dropped (evaluation/grounding.py)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
     verify_confusion: float = 0.01  # ... and chance the object is named as a similar category

@@ -87,6 +87,20 @@ def test_absent_target_is_a_recorded_failure(setup, apartment):
     assert r["rejected_candidates"] >= 1
 
 
+def test_a_remark_read_as_a_goal_is_dropped_before_it_costs_the_episode(setup, apartment):
+    """The parser reads 'no rush at all on this one' as a first goal; grounding it in the memory's names
+    drops it (evaluation/grounding.py), so the sofa is goal 0 again. Without grounding the remark takes the
+    sofa's place and the episode fails."""
+    cfg, bank, streams, emb, ex = setup
+    ep = Episode(id="remark", scene=apartment.name, instruction="No rush at all on this one: the sofa, then the fridge.",
+                 modality="text", goals=("sofa_1", "fridge_1"), order="strict")
+    rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "ragnav", executor=ex)
+    assert rows[0]["success"] and rows[0]["ungrounded"] == ["no rush"]
+    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, ground=False))
+    rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, off, "ragnav", executor=ex)
+    assert not rows[0]["success"] and rows[0]["ungrounded"] == []
+
+
 def test_plan_order_matches_brute_force():
     rng = np.random.default_rng(0)
     pts = rng.uniform(0, 10, (6, 2))

@@ -42,6 +42,7 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
+from ragnav_jax.evaluation.grounding import MemoryGrounder
 from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
@@ -151,6 +152,8 @@ class Candidates:
     top: list = dataclasses.field(default_factory=list)  # per episode, per goal: the retrieval's top-1 node or None
     scores: list = dataclasses.field(default_factory=list)  # per episode, per goal, per candidate: retrieval score
     # (RAGNav: the relaxed one for candidates the hard constraints dropped) or None (Oracle)
+    ungrounded: dict = dataclasses.field(default_factory=dict)  # episode id -> parsed goal phrases naming nothing
+    # the memory knows, dropped before retrieval (evaluation/grounding.py)
 
 
 @jax.jit
@@ -247,7 +250,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     k = cfg.eval.candidates
     names = list(bank.names)
     by_name = {s.name: s for s in scenes}
-    items = goal_items(episodes)
+    ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
+    items = goal_items(episodes, ground)
     per_ep: dict[str, list] = defaultdict(list)
     subgoals: dict[str, object] = {}
     for ep, _kk, _goal, sg in items:
@@ -261,7 +265,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
     if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
-        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder)
+        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground)
         timing["embed_ms"] = bmeta.embed_ms
         rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
         name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
@@ -352,7 +356,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     scores = [[score_of.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,
-                      [est_ep[ep.id] for ep in episodes], top, scores)
+                      [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {})
 
 
 # ----------------------------------------------------------------------------------------------------

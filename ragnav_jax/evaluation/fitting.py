@@ -7,7 +7,8 @@ evaluation houses), each object perceived `looks` times by the captioner (standi
 views of it: its names and aliases). Labels come from
 the seen generator's own vocabulary: a head noun names an object when `category_matches` says so
 (category, synonym or hypernym); an attribute is contradicted when the description says another option
-of the same attribute kind; a room phrase names the rooms of that type (scored by the encoder as if
+of the same attribute kind; a run of content words of a seen-template instruction names an object when it is a
+goal's or an anchor's head (`ground_rows`, for grounding.py); a room phrase names the rooms of that type (scored by the encoder as if
 the summariser did not know the type, so the margin holds for room names it does not know). Each threshold is the grid
 value with the best balanced accuracy, except the room gate: the smallest margin to the house-wide best
 room that keeps 95% of the true rooms. The unseen catalogue is never read (a test checks this).
@@ -25,7 +26,7 @@ import numpy as np
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.verify import FITTED_FORMAT, Verifier, VerifierParams, descriptors, said
 from ragnav_jax.io import write_text
-from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_matches
+from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_matches, generate_episodes
 
 GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
 GRID_MARGIN = np.round(np.arange(0.0, 0.41, 0.02), 2)
@@ -114,9 +115,40 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
             np.array(room_rows, np.float64).reshape(-1, 2), np.array(gate_rows, np.float64).reshape(-1))
 
 
+def ground_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> np.ndarray:
+    """(n, 2) rows (fit to the house's recorded names, label) for every run of content words that grounding
+    may take as a head (`grounding.candidate_heads`) in the seen templates' instructions on seen-split
+    houses: label 1 for a goal's or an anchor's head as the generator wrote it, 0 for a piece sharing no word
+    with any goal, anchor or room (the verbs, order words and remarks around the goals)."""
+    from ragnav_jax.evaluation.grounding import candidate_heads, name_fit
+
+    v = Verifier.build(embedder, cfg, VerifierParams())
+    v.looks = 1
+    houses = _seen_scenes(cfg, scenes, seed)
+    ecfg = dataclasses.replace(cfg.episodes, split="seen")
+    rows = []
+    for h, scene in enumerate(houses):
+        vocab = sorted({p.name for k in range(looks) for (p,) in v.perceptions_of(scene, f"fit-{seed}-{h}-{k}")})
+        for g in generate_episodes([scene], ecfg, seed + h):
+            heads, words = set(), set()
+            for sg in g.truth.subgoals:
+                stack = [sg.target]
+                words |= set((sg.room or "").split())
+                while stack:
+                    t = stack.pop()
+                    heads.add(t.head)
+                    words |= set(t.phrase.split()) | {w for a in t.attributes for w in a.split()}
+                    stack += [r.anchor for r in t.relations]
+            pieces = [x for x in candidate_heads(g.episode.instruction) if x in heads or not set(x.split()) & words]
+            rows += [(f, x in heads) for x, f in zip(pieces, name_fit(v, pieces, vocab))]
+    return np.array(rows, np.float64).reshape(-1, 2)
+
+
 def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> dict:
-    """Fits tau_head / head_margin, tau_kind and room_margin on seen-split houses; returns the fitted.json entry."""
+    """Fits tau_head / head_margin, tau_kind, room_margin / room_gate and tau_ground on seen-split houses;
+    returns the fitted.json entry."""
     H, Kd, R, G = training_rows(cfg, embedder, scenes, seed, looks)
+    Gr = ground_rows(cfg, embedder, scenes, seed, looks)
     exact, label, known = H[:, 2] > 0, H[:, 3] > 0, H[:, 4] > 0
     name_acc = {(t, m): balanced_accuracy(exact | (~known & (H[:, 0] >= t) & (H[:, 1] <= m)), label)
                 for t, m in itertools.product(GRID_TAU, GRID_MARGIN)}
@@ -125,12 +157,14 @@ def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int =
     (room_margin,), acc_room = plateau_centre({(m,): balanced_accuracy(R[:, 0] <= m, R[:, 1] > 0) for m in GRID_MARGIN})
     # the gate: the smallest margin to the house-wide best room that keeps 95% of the true rooms
     room_gate = next((m for m in GRID_MARGIN if (G <= m).mean() >= GATE_RECALL), GRID_MARGIN[-1])
+    (tau_ground,), acc_ground = plateau_centre({(t,): balanced_accuracy(Gr[:, 0] >= t, Gr[:, 1] > 0) for t in GRID_TAU})
     params = VerifierParams(tau_head=float(tau_head), head_margin=float(head_margin), tau_kind=float(tau_kind),
-                            room_margin=float(room_margin), room_gate=float(room_gate))
+                            room_margin=float(room_margin), room_gate=float(room_gate), tau_ground=float(tau_ground))
     return {
         "params": dataclasses.asdict(params),
-        "balanced_accuracy": {"name": round(acc_name, 4), "attribute": round(acc_kind, 4), "room": round(acc_room, 4)},
-        "samples": {"name": len(H), "attribute": len(Kd), "room": len(R), "room_gate": len(G)},
+        "balanced_accuracy": {"name": round(acc_name, 4), "attribute": round(acc_kind, 4), "room": round(acc_room, 4),
+                              "ground": round(acc_ground, 4)},
+        "samples": {"name": len(H), "attribute": len(Kd), "room": len(R), "room_gate": len(G), "ground": len(Gr)},
         "fitted_on": {"split": "seen", "world_seed": seed, "scenes": scenes, "looks": looks,
                       "embedder": cfg.memory.embedder},
     }

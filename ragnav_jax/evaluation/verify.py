@@ -71,6 +71,7 @@ class VerifierParams:
     tau_kind: float = 0.5
     room_margin: float = 0.05
     room_gate: float = 0.1  # an unknown room name's room also fits within this of the house-wide best
+    tau_ground: float = 0.5  # a run of instruction words names a recorded object (grounding.py)
 
 
 def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierParams:

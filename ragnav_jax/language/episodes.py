@@ -87,16 +87,26 @@ HYPERNYMS: dict[str, frozenset[str]] = {
 
 
 @functools.cache
-def names() -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
-    """(synonyms, hypernyms) people use: the seen ones above and the world's unseen-split vocabulary
-    (world/vocabulary.py UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS). The catalogues are disjoint, so a house's
-    categories decide which apply (seen houses are described exactly as before the unseen ones existed)."""
+def names(unseen: bool = True) -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
+    """(synonyms, hypernyms) people use: the seen ones above and, with `unseen`, the world's unseen-split
+    vocabulary (world/vocabulary.py UNSEEN_SYNONYMS, UNSEEN_HYPERNYMS). The catalogues are disjoint, so a
+    house's categories decide which apply (`names_for`: seen houses are described exactly as before the
+    unseen ones existed, and describing them never reads the unseen tables)."""
+    if not unseen:
+        return dict(SYNONYMS), dict(HYPERNYMS)
     from ragnav_jax.world.vocabulary import UNSEEN_HYPERNYMS, UNSEEN_SYNONYMS
 
     hyp = dict(HYPERNYMS)
     for k, cats in UNSEEN_HYPERNYMS.items():
         hyp[k] = hyp.get(k, frozenset()) | cats
     return {**SYNONYMS, **UNSEEN_SYNONYMS}, hyp
+
+
+def names_for(categories) -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset[str]]]:
+    """`names()` for objects of these categories: the unseen tables only when one is not a seen category."""
+    from ragnav_jax.world.vocabulary import CATALOG
+
+    return names(any(c not in CATALOG for c in categories))
 
 
 FRAMES = {"gold": "gold-framed", "black": "black-framed", "wooden": "wooden-framed", "aluminium": "aluminium-framed",
@@ -251,7 +261,7 @@ class SceneFacts:
 
     @classmethod
     def build(cls, scene: Scene, cfg: EpisodesConfig) -> SceneFacts:
-        syn, hyp = names()
+        syn, hyp = names_for({o.category for o in scene.objects})
         heads = {h for o in scene.objects for h in (o.category, *syn.get(o.category, ()))} | set(hyp)
         by_head = {h: tuple(o for o in scene.objects if head_matches(o, h)) for h in heads}
         facts = cls(scene, cfg.near_distance, cfg.location_radius, {r.id: r.type for r in scene.rooms},
@@ -287,8 +297,8 @@ def attribute_phrases(o: SceneObject) -> tuple[str, ...]:
 
 def category_matches(category: str, head: str, vocab: tuple[dict, dict] | None = None) -> bool:
     """A head noun names this category: the category itself, a synonym of it, or a hypernym of it
-    (vocab: (synonyms, hypernyms), by default `names()`)."""
-    syn, hyp = vocab or names()
+    (vocab: (synonyms, hypernyms), by default `names_for` the category)."""
+    syn, hyp = vocab or names_for((category,))
     return head == category or head in syn.get(category, ()) or category in hyp.get(head, ())
 
 
@@ -390,7 +400,7 @@ def _expressible(head: str, attrs: tuple[str, ...]) -> bool:
 
 
 def _heads(o: SceneObject) -> list[str]:
-    return [h for h in (o.category, *names()[0].get(o.category, ())) if _expressible(h, ())]
+    return [h for h in (o.category, *names_for((o.category,))[0].get(o.category, ())) if _expressible(h, ())]
 
 
 def _attr_sets(facts: SceneFacts, o: SceneObject) -> list[tuple[str, ...]]:
@@ -617,7 +627,7 @@ def describe_sensor(facts: SceneFacts, o: SceneObject, rng, cfg: EpisodesConfig)
     if not readings:
         return None
     options = []
-    heads = _heads(o) + [h for h, cats in names()[1].items() if o.category in cats]
+    heads = _heads(o) + [h for h, cats in names_for((o.category,))[1].items() if o.category in cats]
     room_type = facts.room_type[o.room]
     for rd, val in readings:
         tol = APPROX_TOL[rd]

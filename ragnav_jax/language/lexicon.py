@@ -475,3 +475,20 @@ def is_room_phrase(words: list[str] | tuple[str, ...]) -> bool:
         return False
     last = words[-1]
     return last in ROOM_WORDS or (last in ROOM_SUFFIXES and len(words) >= 2) or tuple(words) == ("room",)
+
+# English closed-class words (articles, pronouns, prepositions, conjunctions, auxiliaries, number words,
+# discourse particles) with the function-word tables above: none of them names an object, so a goal's head
+# containing one is a misreading to repair against the memory's names (evaluation/grounding.py).
+CLOSED_CLASS = frozenset(
+    """a an the this that these those some any each every either neither no all both another other such what
+    whatever which whichever who whom whose i me my mine you your yours he him his she her hers it its we us our
+    ours they them their theirs myself yourself itself themselves one ones am is are was were be been being do
+    does did done doing have has had having will would shall should can could may might must to of in on at by
+    for from with without into onto upon about above across after against along among around before behind below
+    beneath beside besides between beyond down during except inside near off out outside over past since through
+    throughout till toward towards under underneath until unto up via within and or but nor so yet if then than
+    because while whereas although though unless once when whenever where wherever whether not just only also too
+    very really quite rather please kindly thanks thank okay ok um uh er erm like oh hey hi yes s t ll re ve d m
+    hundred thousand point comma""".split()
+) | DETERMINERS | PRONOUN_ANCHORS | TRUE_COPULAS | MODALS | SUBORDINATORS | SUBJECT_PRONOUNS | frozenset(
+    NUMBER_WORDS) | frozenset(ORDINAL_WORDS) | frozenset(VERB_PARTICLES) | frozenset(VERB_PREPOSITIONS)

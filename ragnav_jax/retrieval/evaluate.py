@@ -19,7 +19,7 @@ import dataclasses
 import functools
 import time
 from collections import defaultdict
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import jax
 import jax.numpy as jnp
@@ -107,10 +107,11 @@ def correct_counts(batch: RetrievalBatch, params: RetrievalParams) -> jax.Array:
     return jnp.sum(batch.group & hit[..., None], axis=(0, 1)).astype(jnp.int32)
 
 
-def goal_items(episodes: Sequence[Episode]) -> list[tuple]:
-    """(episode, goal k, goal object id, Subgoal or None) for every goal of every episode, in order."""
+def goal_items(episodes: Sequence[Episode], ground: Callable | None = None) -> list[tuple]:
+    """(episode, goal k, goal object id, Subgoal or None) for every goal of every episode, in order.
+    ground: (episode, subgoals) -> subgoals, applied to each parse (evaluation/grounding.py)."""
     items = []
-    for ep, sgs in zip(episodes, parse_all(episodes)):
+    for ep, sgs in zip(episodes, parse_all(episodes, ground)):
         for k, goal in enumerate(ep.goals):
             items.append((ep, k, goal, sgs[k] if sgs is not None and k < len(sgs) else None))
     return items
@@ -118,12 +119,12 @@ def goal_items(episodes: Sequence[Episode]) -> list[tuple]:
 
 def prepare_batch(
     bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder,
-    index_and_metas: tuple | None = None, modalities: Sequence[str] | None = None,
+    index_and_metas: tuple | None = None, modalities: Sequence[str] | None = None, ground: Callable | None = None,
 ) -> tuple[RetrievalBatch | None, BatchMeta]:
     """Parses, embeds and groups the episodes' subgoals by scene (host side, once per episodes file).
 
-    index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. Returns
-    (None, meta) when no instruction yields a subgoal.
+    index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. ground: as in goal_items.
+    Returns (None, meta) when no instruction yields a subgoal.
     """
     names = list(bank.names)
     unknown = sorted({ep.scene for ep in episodes} - set(names))
@@ -132,7 +133,7 @@ def prepare_batch(
 
         raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
     index, imetas = index_and_metas or build_bank_index(bank, scenes, embedder)
-    items = goal_items(episodes)
+    items = goal_items(episodes, ground)
     mods = tuple(modalities) if modalities is not None else tuple(sorted({ep.modality for ep in episodes}))
     totals = np.zeros(len(mods), np.int64)
     for it in items:
@@ -176,10 +177,11 @@ def _subgoals(instruction: str) -> tuple[Subgoal, ...] | None:
         return None
 
 
-def parse_all(episodes: Sequence[Episode]) -> list[tuple[Subgoal, ...] | None]:
+def parse_all(episodes: Sequence[Episode], ground: Callable | None = None) -> list[tuple[Subgoal, ...] | None]:
     """Each episode's parsed subgoals, None where the parser cannot read the instruction (cached per text:
-    a batch command checks for unreadable instructions before it scores them)."""
-    return [_subgoals(ep.instruction) for ep in episodes]
+    a batch command checks for unreadable instructions before it scores them); ground: as in goal_items."""
+    sgs = [_subgoals(ep.instruction) for ep in episodes]
+    return sgs if ground is None else [None if s is None else ground(ep, s) for ep, s in zip(episodes, sgs)]
 
 
 def unparsed(episodes: Sequence[Episode]) -> list[str]:

@@ -1,0 +1,158 @@
+"""Grounding parsed goals in what the memory knows: repair misread heads, drop goals that name nothing.
+
+    subgoals, dropped = ground_subgoals(verifier, subgoals, vocab)   # vocab: every name the memory recorded
+
+The rule parser is written beside the sentences it has met; a new author's phrasing makes it misread in
+two typical ways: words around a goal end up in its head ("the chest freezer a visit" from "pay the chest
+freezer a visit", "condition of the shelf unit" from "verify the condition of the shelf unit", "up" from
+"finish up by tracking down the bonsai tree"), and a remark becomes a goal of its own ("suits you" from
+"in whatever order suits you", "s fine" from "any order's fine"). Both are visible before the robot moves,
+against the memory of the house:
+
+- a head that contains a closed-class word (`lexicon.CLOSED_CLASS`: articles, pronouns, prepositions,
+  auxiliaries, number words; names hold none but 'of' and 'and') is a misreading: it is replaced by the run
+  of content words, taken from the head and then from the subgoal's source span (less its anchors' and
+  room's words), that fits a recorded name best (a name itself scores 1) when that fit reaches
+  `tau_ground` (fitted on the seen split: a goal's head against the other words of seen-template
+  instructions, `fitting.ground_rows`) and beats the head's own; a head no recorded name reaches
+  (cosine below the verifier's `tau_head`) is replaced likewise by a run of its own words;
+- a misread head below `tau_head` with no such run is dropped: the verifier could confirm no object for
+  it (its name check needs that cosine), and the misreading says it is no goal; the dropped phrases are
+  reported (`ungrounded` in the episode rows). A head of content words only stays a goal, found or not;
+- closed-class words are dropped from the attributes.
+
+A head the memory used itself, or one that reaches `tau_head` and holds no closed-class word, is left as
+parsed: the step changes nothing that the parser read correctly. Nothing here reads the scene's true
+categories: only the parse and the names the memory's captioner used.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from collections.abc import Sequence
+
+import numpy as np
+
+from ragnav_jax.language.lexicon import CLOSED_CLASS
+from ragnav_jax.language.types import Subgoal, Target
+
+MAX_SPAN = 4  # longest run of words tried as a head
+NAME_LINKS = frozenset({"of", "and"})
+_WORD = re.compile(r"[a-z0-9]+(?:[-'][a-z0-9]+)*")
+_NUMBER = re.compile(r"^\d+(?:[.,]\d+)?$")
+
+
+def _closed(word: str) -> bool:
+    return word in CLOSED_CLASS or bool(_NUMBER.match(word))
+
+
+def content_runs(text: str) -> list[tuple[str, ...]]:
+    """The maximal runs of content words of a text, in order ('pay the chest freezer a visit' ->
+    [('pay',), ('chest', 'freezer'), ('visit',)])."""
+    runs, cur = [], []
+    for w in _WORD.findall(text.lower().replace("\u2019", "'")):
+        if _closed(w):
+            if cur:
+                runs.append(tuple(cur))
+            cur = []
+        else:
+            cur.append(w)
+    if cur:
+        runs.append(tuple(cur))
+    return runs
+
+
+def candidate_heads(text: str, max_len: int = MAX_SPAN) -> list[str]:
+    """Every contiguous piece of at most max_len words of each content run, in order of appearance."""
+    out = []
+    for run in content_runs(text):
+        for i in range(len(run)):
+            for j in range(i + 1, min(len(run), i + max_len) + 1):
+                out.append(" ".join(run[i:j]))
+    return list(dict.fromkeys(out))
+
+
+def _closed_in(head: str) -> bool:
+    """The head holds a closed-class word that no object's name holds ('of' and 'and' join the nouns of
+    names: 'chest of drawers', 'salt and pepper mill')."""
+    return any(_closed(w) and w not in NAME_LINKS for w in _WORD.findall(head))
+
+
+def name_fit(verifier, pieces: Sequence[str], vocab: Sequence[str]) -> np.ndarray:
+    """(len(pieces),) how well each piece fits the best recorded name: 1 for a name itself, else the cosine."""
+    if not len(pieces):
+        return np.zeros(0)
+    vset = set(vocab)
+    return np.where([p in vset for p in pieces], 1.0, verifier.cos(list(pieces), list(vocab)).max(1))
+
+
+def _best(verifier, pieces: Sequence[str], vocab: Sequence[str]) -> tuple[str | None, float]:
+    """The piece that fits a recorded name best (ties: the longer, then the earlier), with its score."""
+    if not pieces:
+        return None, -1.0
+    fit = name_fit(verifier, pieces, vocab)
+    i = max(range(len(pieces)), key=lambda k: (round(float(fit[k]), 6), len(pieces[k].split()), -k))
+    return pieces[i], float(fit[i])
+
+
+def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str]) -> Subgoal | None:
+    """The subgoal with its head repaired against the memory's names (module docstring), or None when
+    nothing in it names anything the memory knows. vocab: every name the memory recorded (lower case)."""
+    t, p = sg.target, verifier.p
+    attrs = tuple(a for a in t.attributes if not all(_closed(w) for w in _WORD.findall(a)))
+    head = t.head
+    fit, misread = float(name_fit(verifier, [head], vocab)[0]), _closed_in(head)
+    if fit < 1.0 and (fit < p.tau_head or misread):
+        best, score = _best(verifier, candidate_heads(head), vocab)
+        if score < p.tau_ground and misread:  # nothing in the head: the words around it in its span, less
+            # those of its anchors and room (another object's name there is not this goal's)
+            taken = set(_WORD.findall(" ".join([sg.room or "", *_anchor_phrases(t)])))
+            best, score = _best(verifier, [x for x in candidate_heads(sg.text) if not set(x.split()) & taken], vocab)
+        if score >= p.tau_ground and score > fit:
+            head = best
+        elif misread and fit < p.tau_head:
+            return None
+    if head == t.head and attrs == t.attributes:
+        return sg
+    pre = t.phrase[: -len(t.head)] if t.phrase.endswith(t.head) else " ".join(attrs)
+    phrase = " ".join([w for w in pre.split() if not _closed(w)] + [head])
+    return dataclasses.replace(sg, target=dataclasses.replace(t, phrase=phrase, head=head, attributes=attrs))
+
+
+def _anchor_phrases(t: Target) -> list[str]:
+    return [x for r in t.relations for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
+
+
+def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str]
+                    ) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
+    """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones)."""
+    if not vocab:
+        return tuple(subgoals), ()
+    kept, dropped = [], []
+    for sg in subgoals:
+        g = ground_subgoal(verifier, sg, vocab)
+        if g is None:
+            dropped.append(sg.target.phrase)
+        else:
+            kept.append(g)
+    return tuple(kept), tuple(dropped)
+
+
+class MemoryGrounder:
+    """`ground_subgoals` against each scene's memory, as the `ground` hook of goal_items / prepare_batch:
+    grounder(episode, subgoals) -> subgoals. `dropped[episode id]` keeps the phrases it dropped."""
+
+    def __init__(self, verifier, bank, scenes):
+        from ragnav_jax.evaluation.verify import recorded
+
+        by_name = {s.name: s for s in scenes}
+        self.verifier, self.dropped = verifier, {}
+        self.vocab = {m.scene: sorted({n.lower() for ns in recorded(m, by_name[m.scene])[0].values() for n in ns})
+                      for m in bank.metas if m.scene in by_name}
+
+    def __call__(self, ep, subgoals):
+        kept, dropped = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()))
+        if dropped:
+            self.dropped[ep.id] = dropped
+        return kept

@@ -1,0 +1,124 @@
+"""Grounding parsed goals in the memory's names (evaluation/grounding.py): misread heads are repaired,
+goals that name nothing the memory knows are dropped, correct parses are left alone."""
+
+import dataclasses
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ragnav_jax.config import load_config
+from ragnav_jax.evaluation.grounding import candidate_heads, content_runs, ground_subgoal, ground_subgoals, name_fit
+from ragnav_jax.evaluation.verify import Verifier
+from ragnav_jax.language.lexicon import CLOSED_CLASS
+from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.types import Relation, Subgoal, Target
+from ragnav_jax.memory.encoder import make_embedder
+
+VOCAB = ["chest freezer", "bonsai tree", "dehumidifier", "sofa", "table saw", "spice rack", "reading lamp", "shelf unit"]
+
+
+@pytest.fixture(scope="module")
+def verifier():
+    return Verifier.build(make_embedder("minilm"), load_config(None, []))
+
+
+def goal(phrase: str, text: str, head: str | None = None, attrs=()) -> Subgoal:
+    return Subgoal(0, Target(phrase, head or phrase, tuple(attrs)), text=text)
+
+
+def test_content_runs_split_at_closed_class_words():
+    assert content_runs("pay the chest freezer a visit") == [("pay",), ("chest", "freezer"), ("visit",)]
+    assert content_runs("the teddy bear at four point two comma 8.5") == [("teddy", "bear")]
+    assert candidate_heads("the hi-fi speaker's shelf") == ["hi-fi", "hi-fi speaker's", "hi-fi speaker's shelf",
+                                                             "speaker's", "speaker's shelf", "shelf"]
+
+
+@pytest.mark.parametrize("phrase,text,want", [
+    ("chest freezer a visit", "pay the chest freezer a visit", "chest freezer"),  # light verb around the goal
+    ("condition of the shelf unit", "verify the condition of the shelf unit", "shelf unit"),
+    ("robot is requested to inspect the table saw", "the robot is requested to inspect the table saw", "table saw"),
+    ("sofa until", "leave the sofa until last", "sofa"),
+    ("up", "finish up by tracking down the bonsai tree", "bonsai tree"),  # nothing in the head: its source span
+    ("spice rack comma eight point five", "the spice rack around four point one comma eight point five", "spice rack"),
+])
+def test_misread_heads_are_repaired_to_the_name_they_carry(verifier, phrase, text, want):
+    g = ground_subgoal(verifier, goal(phrase, text), VOCAB)
+    assert g is not None and g.target.head == want and g.target.phrase == want
+
+
+@pytest.mark.parametrize("phrase,text", [
+    ("suits you", "in whatever order suits you"),
+    ("s fine", "any order's fine"),
+    ("one stop this time", "just the one stop this time"),
+    ("do it", "do it in any order you want"),
+])
+def test_remarks_read_as_goals_are_dropped(verifier, phrase, text):
+    kept, dropped = ground_subgoals(verifier, [goal(phrase, text), goal("sofa", "then the sofa")], VOCAB)
+    assert [s.target.head for s in kept] == ["sofa"] and dropped == (phrase,)
+
+
+def test_a_goal_of_content_words_stays_a_goal_found_or_not(verifier):
+    for sg in (goal("zebra", "find the zebra"), goal("couch", "go to the couch"),  # no name / a near name
+               goal("brass reading lamp", "the brass reading lamp", "reading lamp", ("brass",)),
+               goal("chest of drawers", "the chest of drawers", "chest of drawers")):  # 'of' joins a name
+        assert ground_subgoal(verifier, sg, [*VOCAB, "drawers"]) is sg
+
+
+def test_another_objects_name_in_the_span_is_not_taken(verifier):
+    """A misread head is not replaced by its anchor's or room's name, which its span also holds."""
+    anchor = Target("sofa", "sofa")
+    sg = Subgoal(0, Target("up", "up", relations=(Relation("near", anchor),)), room="kitchen",
+                 text="finish up near the sofa in the kitchen")
+    assert ground_subgoal(verifier, sg, VOCAB) is None
+    sg = dataclasses.replace(sg, text="finish up by the bonsai tree near the sofa in the kitchen")
+    assert ground_subgoal(verifier, sg, VOCAB).target.head == "bonsai tree"
+
+
+def test_closed_class_attributes_are_dropped_and_the_rest_kept(verifier):
+    sg = goal("to be retro dehumidifier", "the retro dehumidifier that is to be found", "dehumidifier",
+              ("to", "be", "retro"))
+    g = ground_subgoal(verifier, sg, VOCAB)
+    assert g.target.attributes == ("retro",) and g.target.phrase == "retro dehumidifier"
+    assert g.target.head == "dehumidifier" and g.text == sg.text
+
+
+def test_without_a_memory_nothing_changes(verifier):
+    sgs = (goal("suits you", "whatever order suits you"),)
+    assert ground_subgoals(verifier, sgs, []) == (sgs, ())
+
+
+def test_seen_sentences_parsed_correctly_are_left_alone(verifier):
+    chain = parse_instruction("First go to the spice rack next to the sofa in the kitchen, then the warmest "
+                              "dehumidifier, and finally the chest freezer at x=3.5, y=2.")
+    kept, dropped = ground_subgoals(verifier, chain.subgoals, VOCAB)
+    assert kept == chain.subgoals and dropped == ()
+
+
+words = st.sampled_from(["the", "a", "to", "of", "chest", "freezer", "visit", "pay", "sofa", "two", "up", "blue",
+                         "table", "saw", "it", "rack", "spice", "5.5"])
+
+
+@settings(max_examples=60, deadline=None)
+@given(head_words=st.lists(words, min_size=1, max_size=5), text_words=st.lists(words, max_size=8))
+def test_a_repaired_head_is_a_run_of_content_words_of_head_or_span(verifier, head_words, text_words):
+    head, text = " ".join(head_words), " ".join(head_words + text_words)
+    g = ground_subgoal(verifier, goal(head, text), VOCAB)
+    fit = name_fit(verifier, [head], VOCAB)[0]
+    if g is None:  # dropped only when the head is misread, fails the name check and no piece of it or its span grounds
+        assert any(w in CLOSED_CLASS or w[0].isdigit() for w in head_words) and fit < verifier.p.tau_head
+        assert name_fit(verifier, candidate_heads(text), VOCAB).max(initial=0.0) < verifier.p.tau_ground
+        return
+    if g.target.head != head:
+        assert g.target.head in candidate_heads(text)
+        assert not set(g.target.head.split()) & CLOSED_CLASS
+        assert verifier.p.tau_ground <= name_fit(verifier, [g.target.head], VOCAB)[0] and fit < 1.0
+    if head in VOCAB:
+        assert g.target == Target(head, head)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.sampled_from(VOCAB), min_size=1, max_size=4))
+def test_goals_named_as_the_memory_names_them_are_unchanged(verifier, names):
+    sgs = tuple(dataclasses.replace(goal(n, f"go to the {n}"), index=i) for i, n in enumerate(names))
+    assert ground_subgoals(verifier, sgs, VOCAB) == (sgs, ())
