@@ -83,6 +83,16 @@ def test_closed_class_attributes_are_dropped_and_the_rest_kept(verifier):
     assert g.target.head == "dehumidifier" and g.text == sg.text
 
 
+def test_attributes_nobody_said_that_describe_nothing_are_dropped(verifier):
+    """'required' (from "no further action is required") is no descriptive word and the memory never said
+    it: dropped. A colour or material the memory never said stays a constraint, as does a word it said."""
+    captions = "a retro sofa | a grey spice rack with jars"
+    sg = goal("required granite retro sofa", "the sofa", "sofa", ("required", "granite", "retro"))
+    g = ground_subgoal(verifier, sg, VOCAB, captions)
+    assert g.target.attributes == ("granite", "retro") and g.target.phrase == "granite retro sofa"
+    assert ground_subgoal(verifier, sg, VOCAB).target.attributes == sg.target.attributes  # no captions: kept
+
+
 def test_without_a_memory_nothing_changes(verifier):
     sgs = (goal("suits you", "whatever order suits you"),)
     assert ground_subgoals(verifier, sgs, []) == (sgs, ())

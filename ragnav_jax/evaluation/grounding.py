@@ -19,7 +19,9 @@ against the memory of the house:
 - a misread head below `tau_head` with no such run is dropped: the verifier could confirm no object for
   it (its name check needs that cosine), and the misreading says it is no goal; the dropped phrases are
   reported (`ungrounded` in the episode rows). A head of content words only stays a goal, found or not;
-- closed-class words are dropped from the attributes.
+- an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
+  lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
+  memory ever said it ('required' from "no further action is required", 'noted', 'requested').
 
 A head the memory used itself, or one that reaches `tau_head` and holds no closed-class word, is left as
 parsed: the step changes nothing that the parser read correctly. Nothing here reads the scene's true
@@ -34,7 +36,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ragnav_jax.language.lexicon import CLOSED_CLASS
+from ragnav_jax.evaluation.verify import recorded, said
+from ragnav_jax.language.lexicon import CLOSED_CLASS, is_modifier
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -96,11 +99,13 @@ def _best(verifier, pieces: Sequence[str], vocab: Sequence[str]) -> tuple[str | 
     return pieces[i], float(fit[i])
 
 
-def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str]) -> Subgoal | None:
+def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | None = None) -> Subgoal | None:
     """The subgoal with its head repaired against the memory's names (module docstring), or None when
-    nothing in it names anything the memory knows. vocab: every name the memory recorded (lower case)."""
+    nothing in it names anything the memory knows. vocab: every name the memory recorded (lower case);
+    captions: everything the memory's captions said, lower case (None: attributes are not checked)."""
     t, p = sg.target, verifier.p
-    attrs = tuple(a for a in t.attributes if not all(_closed(w) for w in _WORD.findall(a)))
+    attrs = tuple(a for a in t.attributes if not all(_closed(w) for w in _WORD.findall(a))
+                  and (captions is None or said(a, captions) or all(is_modifier(w) for w in a.split())))
     head = t.head
     fit, misread = float(name_fit(verifier, [head], vocab)[0]), _closed_in(head)
     if fit < 1.0 and (fit < p.tau_head or misread):
@@ -116,7 +121,8 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str]) -> Subgoal | Non
     if head == t.head and attrs == t.attributes:
         return sg
     pre = t.phrase[: -len(t.head)] if t.phrase.endswith(t.head) else " ".join(attrs)
-    phrase = " ".join([w for w in pre.split() if not _closed(w)] + [head])
+    gone = {w for a in t.attributes if a not in attrs for w in a.split()}
+    phrase = " ".join([w for w in pre.split() if not _closed(w) and w not in gone] + [head])
     return dataclasses.replace(sg, target=dataclasses.replace(t, phrase=phrase, head=head, attributes=attrs))
 
 
@@ -124,14 +130,14 @@ def _anchor_phrases(t: Target) -> list[str]:
     return [x for r in t.relations for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
 
 
-def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str]
+def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str], captions: str | None = None
                     ) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
     """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones)."""
     if not vocab:
         return tuple(subgoals), ()
     kept, dropped = [], []
     for sg in subgoals:
-        g = ground_subgoal(verifier, sg, vocab)
+        g = ground_subgoal(verifier, sg, vocab, captions)
         if g is None:
             dropped.append(sg.target.phrase)
         else:
@@ -144,15 +150,15 @@ class MemoryGrounder:
     grounder(episode, subgoals) -> subgoals. `dropped[episode id]` keeps the phrases it dropped."""
 
     def __init__(self, verifier, bank, scenes):
-        from ragnav_jax.evaluation.verify import recorded
-
         by_name = {s.name: s for s in scenes}
         self.verifier, self.dropped = verifier, {}
         self.vocab = {m.scene: sorted({n.lower() for ns in recorded(m, by_name[m.scene])[0].values() for n in ns})
                       for m in bank.metas if m.scene in by_name}
+        self.captions = {m.scene: " | ".join(c.lower() for c in m.captions) for m in bank.metas}
 
     def __call__(self, ep, subgoals):
-        kept, dropped = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()))
+        kept, dropped = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()),
+                                        self.captions.get(ep.scene))
         if dropped:
             self.dropped[ep.id] = dropped
         return kept
