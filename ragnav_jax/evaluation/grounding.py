@@ -1,4 +1,4 @@
-"""Grounding parsed goals in what the memory knows: repair misread heads, drop goals that name nothing.
+"""Grounding parsed goals in what the memory knows: repair misread heads, drop remarks read as goals.
 
     subgoals, dropped = ground_subgoals(verifier, subgoals, vocab)   # vocab: every name the memory recorded
 
