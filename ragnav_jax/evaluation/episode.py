@@ -43,7 +43,7 @@ from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
 from ragnav_jax.evaluation.grounding import MemoryGrounder
-from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table
+from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table, vocabulary
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
@@ -270,7 +270,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
         name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
         classes = [name_classes(r[0])[0] for r in rec]  # per scene: name -> its aliases
-        vocab = [sorted({x.lower() for ns in r[0].values() for x in ns}) for r in rec]  # per scene: every name
+        vocab = [vocabulary(r[0]) for r in rec]  # per scene: every name
         if batch is not None:
             jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
             t0 = time.perf_counter()

@@ -36,7 +36,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ragnav_jax.evaluation.verify import recorded, said
+from ragnav_jax.evaluation.verify import recorded, said, vocabulary
 from ragnav_jax.language.lexicon import CLOSED_CLASS, is_modifier
 from ragnav_jax.language.types import Subgoal, Target
 
@@ -147,18 +147,21 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
 
 class MemoryGrounder:
     """`ground_subgoals` against each scene's memory, as the `ground` hook of goal_items / prepare_batch:
-    grounder(episode, subgoals) -> subgoals. `dropped[episode id]` keeps the phrases it dropped."""
+    grounder(episode, subgoals) -> subgoals, each (scene, parse) grounded once. `dropped[episode id]`
+    keeps the phrases it dropped."""
 
     def __init__(self, verifier, bank, scenes):
         by_name = {s.name: s for s in scenes}
-        self.verifier, self.dropped = verifier, {}
-        self.vocab = {m.scene: sorted({n.lower() for ns in recorded(m, by_name[m.scene])[0].values() for n in ns})
-                      for m in bank.metas if m.scene in by_name}
+        self.verifier, self.dropped, self._done = verifier, {}, {}
+        self.vocab = {m.scene: vocabulary(recorded(m, by_name[m.scene])[0]) for m in bank.metas if m.scene in by_name}
         self.captions = {m.scene: " | ".join(c.lower() for c in m.captions) for m in bank.metas}
 
     def __call__(self, ep, subgoals):
-        kept, dropped = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()),
-                                        self.captions.get(ep.scene))
+        key = (ep.scene, subgoals)
+        if key not in self._done:
+            self._done[key] = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()),
+                                              self.captions.get(ep.scene))
+        kept, dropped = self._done[key]
         if dropped:
             self.dropped[ep.id] = dropped
         return kept

@@ -232,7 +232,7 @@ class Verifier:
     # -- the verdict table
     def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
         """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type."""
-        vocab = sorted({n.lower() for ns in recorded_names.values() for n in ns})
+        vocab = vocabulary(recorded_names)
         aliases = alias_sets(recorded_names)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
         for oi, ns in recorded_names.items():
@@ -353,6 +353,11 @@ class SceneView:
     room_names: dict  # room id -> the names the memory recorded there (empty when none)
     room_type: dict  # room id -> the type the forest's summariser infers from them (rooms with names only)
     aliases: dict  # object index -> every name the memory recorded for it (lower case)
+
+
+def vocabulary(recorded_names: dict[int, Sequence[str]]) -> list[str]:
+    """Every name the memory's captions used in a scene, lower case, sorted (`recorded`'s first part)."""
+    return sorted({n.lower() for ns in recorded_names.values() for n in ns})
 
 
 def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
