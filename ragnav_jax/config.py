@@ -471,6 +471,8 @@ class EvalConfig:
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
     closest_view: bool = True  # RAGNav's legs end at the key pose that recorded the retrieved instance from
     # closest, not at the best-scoring one (see README)
+    search_nodes: int = 4  # candidates run out: key poses searched where the instruction puts the goal, its room
+    # or coordinate hint (0 = none; evaluation/search.py)
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
     # goals naming nothing it knows dropped (evaluation/grounding.py)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
@@ -480,6 +482,7 @@ class EvalConfig:
 
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
+        _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",

@@ -43,6 +43,7 @@ from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
 from ragnav_jax.evaluation.grounding import MemoryGrounder
+from ragnav_jax.evaluation.search import search_table
 from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table, vocabulary
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
@@ -75,6 +76,7 @@ class MethodSpec:
     retrieval: str  # ragnav variant ("ragnav", "no_forest", ...), a BASELINES name, "remembr", "oracle", "etpnav"
     straight: bool  # straight-line legs and Euclidean order costs (no topological map)
     optimal_order: bool  # solve the order (False: instruction order)
+    search: bool = True  # candidates run out: search the key poses where the instruction puts the goal (search.py)
 
 
 def segment_clearance_np(p: np.ndarray, q: np.ndarray, obs: dict) -> np.ndarray:
@@ -92,8 +94,10 @@ def method_spec(name: str) -> MethodSpec:
         return MethodSpec(name, name, False, True)
     # ReMEmbR hands its retrieved goal to a standard navigation stack: the same map paths and local planner as
     # RAGNav here (it once drove straight lines into walls, which measured a crippled navigator, not its memory).
-    return {"remembr": MethodSpec(name, "remembr", False, False), "etpnav": MethodSpec(name, "etpnav", False, False),
-            "oracle": MethodSpec(name, "oracle", False, True)}[name]
+    # The ETPNav-style baseline explores for itself, and the Oracle knows where every goal is: neither searches.
+    return {"remembr": MethodSpec(name, "remembr", False, False),
+            "etpnav": MethodSpec(name, "etpnav", False, False, search=False),
+            "oracle": MethodSpec(name, "oracle", False, True, search=False)}[name]
 
 
 def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:
@@ -421,6 +425,7 @@ class EpisodeState:
     leg: tuple | None = None  # (kind, goal, payload)
     expl_t: int = 0  # ETPNav-style: exploration record reached
     skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
+    looked: set = dataclasses.field(default_factory=set)  # (goal, node): key poses looked around at for the goal
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
@@ -454,6 +459,7 @@ class Loop:
         obs = np.asarray(bank.memory.obs_object)
         self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
         self.verdicts: list = []  # [e][g] -> (O,) bool: the verifier's check of every scene object (verify.py)
+        self.search: list = []  # [e][g] -> key poses to search when the candidates run out (search.py)
 
     # -- helpers
     def _drive_paths(self, bank: MemoryBank) -> np.ndarray:
@@ -630,10 +636,18 @@ class Loop:
             st.trace["rejections"].append({"goal": g, "candidate": st.cptr[g], "why": why, "leg": len(st.legs) - 1})
         st.cptr[g] += 1
         st.rejected[g] += 1
-        if self.current(st, g) is None:
+        if self.current(st, g) is None and self.search_next(st, g) is None:
             st.status[g] = f"failed:{why}"
             st.remaining.remove(g)
         self.replan(st)
+
+    def search_next(self, st: EpisodeState, g: int) -> int | None:
+        """The nearest key pose still to search for goal g (none looked around at for it yet), or None."""
+        if not self.spec.search or st.e >= len(self.search) or g >= len(self.search[st.e]):
+            return None
+        left = [n for n in self.search[st.e][g] if (g, n) not in st.looked]
+        cost = self.euclid if self.spec.straight else self.cost
+        return min(left, key=lambda n: cost[st.b][st.node, n]) if left else None
 
     def goal_object(self, st: EpisodeState, g: int):
         sc = self.scenes[st.ep.scene]
@@ -656,9 +670,11 @@ class Loop:
                 continue
             if self.spec.retrieval == "etpnav":
                 return self.etp_leg(st, g, pose)
-            node = self.current(st, g)
+            node, kind = self.current(st, g), "nav"
             if node is None:
-                st.status[g] = "failed:no_candidate"
+                node, kind = self.search_next(st, g), "search"
+            if node is None:
+                st.status[g] = "failed:searched" if any(k == g for k, _ in st.looked) else "failed:no_candidate"
                 st.remaining.remove(g)
                 continue
             if self.spec.straight:
@@ -666,10 +682,13 @@ class Loop:
             else:
                 path = reconstruct_path(self.drive_pred[st.b], st.node, node)
                 if not path:
-                    self.reject(st, g, "unreachable")
+                    if kind == "search":
+                        st.looked.add((g, node))
+                    else:
+                        self.reject(st, g, "unreachable")
                     continue
                 pts = self.pos[st.b][path]
-            return ("nav", g, node, pts)
+            return (kind, g, node, pts)
         return None
 
     def etp_leg(self, st: EpisodeState, g: int, pose) -> tuple | None:
@@ -765,8 +784,8 @@ class Loop:
     def after_leg(self, st: EpisodeState, leg: tuple, pose: np.ndarray, arrived: bool, visible: np.ndarray) -> None:
         kind, g, payload, _ = leg
         sc = self.scenes[st.ep.scene]
-        if kind in ("nav", "closer"):
-            if kind == "nav" and arrived and not self.spec.straight:
+        if kind in ("nav", "closer", "search"):
+            if kind in ("nav", "search") and arrived and not self.spec.straight:
                 st.node = payload
             else:  # stuck short of the node, or off the map: re-attach where a straight line leads
                 st.node = self.attach(st.b, pose[:2])
@@ -777,6 +796,15 @@ class Loop:
             else:
                 ok = self.passing(st, g, np.flatnonzero(visible))
             ok = [o for o in ok if (g, o) not in st.skip]
+            if kind != "closer":
+                st.looked.add((g, payload))
+            if kind == "search":  # the nearest object that passes, else the next key pose (next_leg)
+                if ok:
+                    o = min(ok, key=lambda i: box_distance(sc.objects[i], pose[:2]))
+                    st.leg = ("approach", g, o, self.approach_points(st, o, pose))
+                else:
+                    st.leg = None
+                return
             est = self.estimate(st, g) if self.spec.retrieval != "oracle" else None
             if not ok and kind == "closer" and est is not None:
                 # Still out of sight from near it (occluded, or small): the memory recorded the instance,
@@ -869,6 +897,8 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     t1 = time.perf_counter()
     if spec.retrieval != "oracle":  # the reflection's check, one verdict per (episode, goal, object)
         loop.verdicts = verdict_table(verifier, bank, scenes, episodes, cands.subgoals)
+    if spec.search and cfg.eval.search_nodes:
+        loop.search = search_table(verifier, bank, scenes, episodes, cands.subgoals, cfg.eval.search_nodes)
     cands.timing["verify_s"] = time.perf_counter() - t1
     states = []
     for e, ep in enumerate(episodes):
@@ -971,7 +1001,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
                 if leg[0] == "approach":  # from where the robot stands, round whatever is in the way
                     way = loop.drive_points(chunk[i], loop.approach_route(chunk[i], poses[i], leg[3][-1]))
                 else:
-                    way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "closer", "goto_seen") else leg[3]
+                    way = loop.drive_points(chunk[i], leg[3]) if leg[0] in ("nav", "search", "closer", "goto_seen") else leg[3]
                 pts[i], n[i] = pad_points(way, P)
                 ways[i] = way
                 st = chunk[i]

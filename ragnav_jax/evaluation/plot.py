@@ -15,7 +15,7 @@ from ragnav_jax.io import save_figure  # noqa: E402
 from ragnav_jax.world.plot import draw_floor_plan  # noqa: E402
 from ragnav_jax.world.scene import Scene  # noqa: E402
 
-LEG_COLORS = {"nav": "tab:blue", "closer": "tab:cyan", "approach": "tab:green", "explore": "tab:purple",
+LEG_COLORS = {"nav": "tab:blue", "closer": "tab:cyan", "search": "tab:orange", "approach": "tab:green", "explore": "tab:purple",
               "goto_seen": "tab:olive"}
 
 

@@ -234,6 +234,7 @@ class Verifier:
         """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type."""
         vocab = vocabulary(recorded_names)
         aliases = alias_sets(recorded_names)
+        classes = name_classes(recorded_names)[0]
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
         for oi, ns in recorded_names.items():
             for n in ns:
@@ -243,7 +244,7 @@ class Verifier:
                   for r in by_room}
         types = {r: _summariser().infer_type(counts[r], 2)[0] for r, ns in by_room.items() if ns}
         return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), {r: tuple(ns) for r, ns in by_room.items()},
-                         types, aliases)
+                         types, aliases, classes)
 
     def perceptions_of(self, scene: Scene, key: str) -> list[tuple[Perceived, ...]]:
         """`looks` close-range perceptions of every scene object (the look-around on arrival sees it from
@@ -255,7 +256,7 @@ class Verifier:
         """(O,) bool: each scene object, perceived as ps (its looks), passes the check for subgoal sg."""
         objs = view.scene.objects
         O = len(objs)
-        ok = self.target_fits(sg.target, ps, view.vocab, [view.aliases.get(i, ()) for i in range(O)])
+        ok = self.target_fits(sg.target, ps, view.vocab, [view.names_of(i, ps[i]) for i in range(O)])
         pool = [i for i in view.known]
         ok &= self.relations_hold(sg.target, view, ps)
         if sg.location is not None:
@@ -289,7 +290,7 @@ class Verifier:
         objs, pool = view.scene.objects, list(view.known)
         ok = np.ones(len(objs), bool)
         for r in t.relations:
-            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.aliases.get(i, ()) for i in pool])
+            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.names_of(i, ps[i]) for i in pool])
             named = [i for i, f in zip(pool, fit) if f]
             if r.anchor.relations and named:
                 nested = self.relations_hold(r.anchor, view, ps)
@@ -353,6 +354,12 @@ class SceneView:
     room_names: dict  # room id -> the names the memory recorded there (empty when none)
     room_type: dict  # room id -> the type the forest's summariser infers from them (rooms with names only)
     aliases: dict  # object index -> every name the memory recorded for it (lower case)
+    classes: dict = dataclasses.field(default_factory=dict)  # name -> the names the memory learnt mean the same
+
+    def names_of(self, i: int, looks: Sequence[Perceived]) -> set[str]:
+        """Every name object i goes by: what its memory recorded and the learnt aliases of what it is called
+        now (an object the memory never recorded is still a 'clothes dryer' where its 'tumble dryer' is one)."""
+        return set(self.aliases.get(i, ())) | {y for p in looks for y in self.classes.get(p.name.lower(), ())}
 
 
 def vocabulary(recorded_names: dict[int, Sequence[str]]) -> list[str]:
@@ -375,9 +382,8 @@ def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
     return names, name_of
 
 
-def verdict_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, subgoals) -> list[list[np.ndarray]]:
-    """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
-    episode that did not parse). Perception noise is seeded by (cfg.seed, episode id)."""
+def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str, SceneView]:
+    """Scene name -> what its memory holds (`Verifier.scene_view`), for the bank's scenes among `scenes`."""
     by_name = {s.name: s for s in scenes}
     obs = np.asarray(bank.memory.obs_object)
     mask = np.asarray(bank.memory.node_mask)
@@ -387,6 +393,13 @@ def verdict_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, s
             scene = by_name[meta.scene]
             known = sorted({int(x) for x in obs[b][mask[b]].ravel() if x >= 0})
             views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, scene)[0])
+    return views
+
+
+def verdict_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, subgoals) -> list[list[np.ndarray]]:
+    """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
+    episode that did not parse). Perception noise is seeded by (cfg.seed, episode id)."""
+    views = memory_views(verifier, bank, scenes)
     out = []
     for ep, sgs in zip(episodes, subgoals):
         if not sgs:

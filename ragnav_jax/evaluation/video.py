@@ -30,7 +30,7 @@ from ragnav_jax.world.scene import Scene  # noqa: E402
 
 SUFFIXES = (".gif", ".mp4")
 HOLD = 3  # frames held after each leg: the look-around (a turn in place) and its outcome
-LOOKING = ("nav", "closer", "explore")  # legs after which the robot looks around (turns in place)
+LOOKING = ("nav", "closer", "search", "explore")  # legs after which the robot looks around (turns in place)
 
 
 def ffmpeg_exe() -> str | None:
