@@ -44,7 +44,7 @@ from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
 from ragnav_jax.evaluation.grounding import MemoryGrounder
 from ragnav_jax.evaluation.search import search_table
-from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, verdict_table, vocabulary
+from ragnav_jax.evaluation.verify import Verifier, memory_views, name_classes, recorded, verdict_table, vocabulary
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
@@ -895,10 +895,11 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
     oracle = retrieve_candidates(method_spec("oracle"), bank, scenes, episodes, embedder, cfg) if method != "oracle" else cands
     t1 = time.perf_counter()
+    views = memory_views(verifier, bank, scenes) if spec.retrieval != "oracle" else {}
     if spec.retrieval != "oracle":  # the reflection's check, one verdict per (episode, goal, object)
-        loop.verdicts = verdict_table(verifier, bank, scenes, episodes, cands.subgoals)
+        loop.verdicts = verdict_table(verifier, views, episodes, cands.subgoals)
     if spec.search and cfg.eval.search_nodes:
-        loop.search = search_table(verifier, bank, scenes, episodes, cands.subgoals, cfg.eval.search_nodes)
+        loop.search = search_table(verifier, views, bank, episodes, cands.subgoals, cfg.eval.search_nodes)
     cands.timing["verify_s"] = time.perf_counter() - t1
     states = []
     for e, ep in enumerate(episodes):

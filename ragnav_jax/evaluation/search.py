@@ -1,6 +1,6 @@
 """Where to look for a goal the memory has no confirmed candidate for: the search table.
 
-    table = search_table(verifier, bank, scenes, episodes, subgoals, nodes=4)  # [e][g] -> node ids
+    table = search_table(verifier, views, bank, episodes, subgoals, nodes=4)  # [e][g] -> node ids (views: memory_views)
 
 The captioner misses things (a small lamp on a shelf, a console a sofa hides from the exploration's
 camera), so a memory never holds every object. When a goal's candidates are all rejected, or it has none,
@@ -17,13 +17,11 @@ Host NumPy, computed before the loop like the verdict table.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 import numpy as np
 
-from ragnav_jax.evaluation.verify import SceneView, Verifier, memory_views
+from ragnav_jax.evaluation.verify import SceneView, Verifier
 from ragnav_jax.language.types import Subgoal
-from ragnav_jax.world.scene import Scene, room_of
+from ragnav_jax.world.scene import room_of
 
 
 def spread(pos: np.ndarray, first: int, k: int) -> list[int]:
@@ -65,10 +63,9 @@ def search_nodes(verifier: Verifier, view: SceneView, sg: Subgoal, node_pos: np.
     return tuple(out[:k])
 
 
-def search_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, subgoals, nodes: int) -> list[list[tuple]]:
+def search_table(verifier: Verifier, views: dict[str, SceneView], bank, episodes, subgoals, nodes: int) -> list[list[tuple]]:
     """[e][g] -> key poses to search for goal g of episode e when its candidates run out (`search_nodes`);
-    an empty list for an episode that did not parse."""
-    views = memory_views(verifier, bank, scenes)
+    an empty list for an episode that did not parse. views: `memory_views` of the episodes' scenes."""
     pos = np.asarray(bank.memory.position)[..., :2]
     live = np.asarray(bank.memory.node_mask)
     names = list(bank.names)

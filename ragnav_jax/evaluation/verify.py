@@ -1,7 +1,8 @@
 """Open-vocabulary verification for the reflection: is a perceived object the subgoal's target?
 
     verifier = Verifier.build(embedder, cfg)                        # thresholds from data/fitted.json
-    table = verdict_table(verifier, bank, scenes, episodes, subgoals)  # [e][g] -> (O,) bool over scene objects
+    views = memory_views(verifier, bank, scenes)                     # scene name -> what its memory holds
+    table = verdict_table(verifier, views, episodes, subgoals)        # [e][g] -> (O,) bool over scene objects
 
 What the robot perceives of an object is what its captioner emits at close range (`looks` looks, each
 a name and a description with seeded perception noise: `perceive`), its sensor readings, and positions
@@ -233,8 +234,8 @@ class Verifier:
     def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
         """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type."""
         vocab = vocabulary(recorded_names)
-        aliases = alias_sets(recorded_names)
-        classes = name_classes(recorded_names)[0]
+        classes, frequent = name_classes(recorded_names)
+        aliases = alias_sets(recorded_names, classes, frequent)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
         for oi, ns in recorded_names.items():
             for n in ns:
@@ -339,9 +340,9 @@ def name_classes(recorded_names: dict[int, Sequence[str]], share: float = 0.15) 
     return {x: frozenset(groups[find(x)]) for x in parent}, frequent
 
 
-def alias_sets(recorded_names: dict[int, Sequence[str]]) -> dict[int, tuple[str, ...]]:
-    """Every name an object goes by: its recorded names and the aliases of its frequent ones (name_classes)."""
-    classes, frequent = name_classes(recorded_names)
+def alias_sets(recorded_names: dict[int, Sequence[str]], classes: dict, frequent: dict) -> dict[int, tuple[str, ...]]:
+    """Every name an object goes by: its recorded names and the aliases of its frequent ones (classes,
+    frequent: `name_classes(recorded_names)`)."""
     return {i: tuple(sorted({n.lower() for n in ns} | {y for x in frequent[i] for y in classes[x]}))
             for i, ns in recorded_names.items()}
 
@@ -396,10 +397,9 @@ def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str,
     return views
 
 
-def verdict_table(verifier: Verifier, bank, scenes: Sequence[Scene], episodes, subgoals) -> list[list[np.ndarray]]:
+def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, subgoals) -> list[list[np.ndarray]]:
     """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
     episode that did not parse). Perception noise is seeded by (cfg.seed, episode id)."""
-    views = memory_views(verifier, bank, scenes)
     out = []
     for ep, sgs in zip(episodes, subgoals):
         if not sgs:
