@@ -354,3 +354,113 @@ def test_approach_route_goes_round_a_small_obstacle_without_a_map_detour(setup, 
         assert np.all(segment_clearance_np(route[:-1], route[1:], obs) >= need * 0.99)
         assert np.linalg.norm(np.diff(route, axis=0), axis=1).sum() <= np.linalg.norm(q - p) + 2 * GRID_WINDOW_M
     assert tried >= 3
+
+
+@pytest.fixture(scope="module")
+def grid_graphs(setup, apartment):
+    """The local planner's occupancy grid of the apartment as networkx graphs of 8-connected cells: those
+    that clear the robot with the planner's margin, and those it just fits in."""
+    import networkx as nx
+
+    from ragnav_jax.evaluation.episode import TIGHT_GAP_M, Loop
+
+    cfg, bank, streams, emb, ex = setup
+    loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
+    lo, clear = loop._grid(0)
+    graphs = {}
+    for name, t in (("need", loop._need()), ("tight", cfg.sim.robot_radius + TIGHT_GAP_M)):
+        free = clear >= t
+        g = nx.Graph()
+        g.add_nodes_from(map(tuple, np.argwhere(free)))
+        for di, dj in ((1, 0), (0, 1), (1, 1), (1, -1)):
+            a = free[max(-di, 0) : free.shape[0] - max(di, 0), max(-dj, 0) : free.shape[1] - max(dj, 0)]
+            b = free[max(di, 0) :, max(dj, 0) :][: a.shape[0], : a.shape[1]]
+            for i, j in np.argwhere(a & b):
+                i0, j0 = i + max(-di, 0), j + max(-dj, 0)
+                g.add_edge((i0, j0), (i0 + di, j0 + dj))
+        graphs[name] = g
+    return loop, lo, clear, graphs
+
+
+def _cell_xy(lo, cell):
+    from ragnav_jax.evaluation.episode import GRID_M
+
+    return (lo + np.asarray(cell, np.float32) * GRID_M).astype(np.float32)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st_.data())
+def test_local_planner_finds_a_way_wherever_networkx_does(grid_graphs, data):
+    """Between free cells of the grid (far apart or round long furniture, beyond the first search window):
+    the local planner's route exists exactly where networkx finds a path through cells the robot fits in,
+    and every segment of it clears the robot; `way_exists` agrees with networkx's connectivity."""
+    import networkx as nx
+
+    from ragnav_jax.evaluation.episode import segment_clearance_np
+
+    loop, lo, clear, graphs = grid_graphs
+    cells = sorted(graphs["need"].nodes)
+    a, c = (cells[data.draw(st_.integers(0, len(cells) - 1))] for _ in range(2))
+    pa, pc = _cell_xy(lo, a), _cell_xy(lo, c)
+    obs = loop.obstacles[0]
+    connected = nx.has_path(graphs["tight"], a, c)
+    assert loop.way_exists(0, pa, pc) == connected
+    route = loop._local(0, pa, pc)
+    straight_ok = segment_clearance_np(pa[None], pc[None], obs)[0] >= loop._need()
+    if connected and not straight_ok:
+        assert len(route) > 2
+    if len(route) > 2 or straight_ok:
+        np.testing.assert_allclose(route[[0, -1]], [pa, pc], atol=1e-5)
+        tight = loop.cfg.sim.robot_radius
+        assert np.all(segment_clearance_np(route[:-1], route[1:], obs) >= tight * 0.999)
+
+
+def test_local_planner_lets_a_robot_out_of_a_tight_spot(grid_graphs):
+    """A robot parked where it fits but without the planner's margin (between furniture and a wall) still
+    gets a route out to open floor nearby, as networkx finds one."""
+    import networkx as nx
+
+    loop, lo, clear, graphs = grid_graphs
+    need, tight = loop._need(), loop.cfg.sim.robot_radius
+    spots = [tuple(x) for x in np.argwhere((clear >= tight) & (clear < need))]
+    tried = 0
+    for s in spots[:: max(len(spots) // 12, 1)]:
+        near = [c for c in graphs["need"].nodes if 8 <= abs(c[0] - s[0]) + abs(c[1] - s[1]) <= 20]
+        goal = next((c for c in near if s in graphs["tight"] and nx.has_path(graphs["tight"], s, c)), None)
+        if goal is None:
+            continue
+        tried += 1
+        route = loop._local(0, _cell_xy(lo, s), _cell_xy(lo, goal))
+        assert len(route) > 2
+    assert tried >= 3
+
+
+def test_approach_stops_where_the_robot_can_get(grid_graphs, setup, apartment):
+    """From spots all over the flat, the approach stop by each object is one networkx connects to the robot
+    whenever a stop of the ring round it is (not one outside the flat's walls, or in a pocket between
+    furniture)."""
+    import networkx as nx
+
+    from ragnav_jax.evaluation.episode import GRID_M, EpisodeState, approach_ring, segment_clearance_np
+
+    loop, lo, clear, graphs = grid_graphs
+    cfg = setup[0]
+    ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
+    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"])
+    g = graphs["tight"]
+    comp = {c: k for k, cc in enumerate(nx.connected_components(g)) for c in cc}
+    cell = lambda p: tuple(int(round(x)) for x in (np.asarray(p) - lo) / GRID_M)  # noqa: E731
+    cells = sorted(graphs["need"].nodes)
+    checked = 0
+    for start in cells[:: len(cells) // 40]:
+        pose = np.array([*_cell_xy(lo, start), 0.0], np.float32)
+        for k, o in enumerate(apartment.objects):
+            c, half = np.asarray(o.position[:2], np.float32), np.asarray(o.size[:2], np.float32) / 2
+            ring = approach_ring(c, half, cfg.eval.approach_gap + cfg.sim.robot_radius)
+            free = ring[segment_clearance_np(ring, ring, loop.obstacles[0]) >= loop._need()]
+            if not any(comp.get(cell(p)) == comp[start] for p in free):
+                continue
+            stop = loop.approach_points(st, k, pose)[0]
+            checked += 1
+            assert comp.get(cell(stop)) == comp[start], (start, o.id)
+    assert checked >= 100

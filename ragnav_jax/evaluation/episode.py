@@ -65,7 +65,9 @@ SAME_INSTANCE_M = 0.5  # a seen object this close to the retrieved instance's es
 TIGHT_PENALTY = 10.0  # driving-path cost factor of map edges that pass closer to an obstacle than the robot's radius
 GRID_M = 0.05  # occupancy grid of the local planner (metres per cell)
 GRID_MARGIN_M = 0.04  # clearance beyond the robot's radius the local planner keeps
-GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches
+GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches first (then the whole house)
+TIGHT_GAP_M = 0.0  # clearance beyond the robot's radius of the passages the local planner tries last
+ESCAPE_M = 0.3  # metres around a leg's ends where the local planner may pass cells as tight as the end itself
 CANDIDATE_DEPTH = 8  # ranked nodes per candidate slot searched for distinct instances
 CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
 
@@ -519,7 +521,7 @@ class Loop:
         return self.cfg.sim.robot_radius + GRID_MARGIN_M
 
     def _grid(self, b: int):
-        """(origin (2,), free (H, W) bool): cells whose clearance to walls and objects fits the robot."""
+        """(origin (2,), clearance (H, W) float): each cell's distance to the nearest wall or object."""
         if b not in self._grids:
             obs = self.obstacles[b]
             pts = np.concatenate([np.asarray(obs["wall_a"]), np.asarray(obs["wall_b"]), self.pos[b][self.mask[b]]])
@@ -527,12 +529,15 @@ class Loop:
             xs, ys = np.arange(lo[0], hi[0], GRID_M), np.arange(lo[1], hi[1], GRID_M)
             cells = np.stack(np.meshgrid(xs, ys, indexing="ij"), -1).reshape(-1, 2).astype(np.float32)
             clear = np.concatenate([segment_clearance_np(c, c, obs) for c in np.array_split(cells, max(len(cells) // 4096, 1))])
-            self._grids[b] = (lo.astype(np.float32), (clear >= self._need()).reshape(len(xs), len(ys)))
+            self._grids[b] = (lo.astype(np.float32), clear.reshape(len(xs), len(ys)))
         return self._grids[b]
 
     def _local(self, b: int, a: np.ndarray, c: np.ndarray) -> np.ndarray:
-        """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS within a
-        window around the segment, shortcut by line of sight); the straight segment when none is found."""
+        """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS over cells
+        that clear the robot with a margin, within a window around the segment, else over the whole house;
+        then the same through passages the robot just fits; shortcut by line of sight); the straight segment
+        when none is found. Within ESCAPE_M of either end a cell as clear as that end passes too, so a robot
+        parked in a tight spot (between a bin and a wall) can leave it."""
         key = (b, *np.round(a, 3), *np.round(c, 3))
         if key in self._local_cache:
             return self._local_cache[key]
@@ -541,25 +546,33 @@ class Loop:
         if segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3:
             self._local_cache[key] = straight
             return straight
-        lo, free = self._grid(b)
-        H, W = free.shape
+        lo, clear = self._grid(b)
+        H, W = clear.shape
         cell = lambda p: (int(np.clip(round((p[0] - lo[0]) / GRID_M), 0, H - 1)),  # noqa: E731
                           int(np.clip(round((p[1] - lo[1]) / GRID_M), 0, W - 1)))
         (i0, j0), (i1, j1) = cell(a), cell(c)
+        ii, jj = np.ogrid[:H, :W]
+        ends = [(ii - i) ** 2 + (jj - j) ** 2 <= (ESCAPE_M / GRID_M) ** 2 for i, j in ((i0, j0), (i1, j1))]
         pad = int(GRID_WINDOW_M / GRID_M)
-        bi0, bi1 = max(min(i0, i1) - pad, 0), min(max(i0, i1) + pad, H - 1)
-        bj0, bj1 = max(min(j0, j1) - pad, 0), min(max(j0, j1) + pad, W - 1)
-        ok = free[bi0 : bi1 + 1, bj0 : bj1 + 1].copy()
-        ok[i0 - bi0, j0 - bj0] = ok[i1 - bi0, j1 - bj0] = True  # the ends themselves may sit in a tight spot
-        prev = {(i0, j0): None}
-        queue = deque([(i0, j0)])
-        while queue and (i1, j1) not in prev:
-            i, j = queue.popleft()
-            for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)):
-                n = (i + di, j + dj)
-                if bi0 <= n[0] <= bi1 and bj0 <= n[1] <= bj1 and n not in prev and ok[n[0] - bi0, n[1] - bj0]:
-                    prev[n] = (i, j)
-                    queue.append(n)
+        window = (max(min(i0, i1) - pad, 0), min(max(i0, i1) + pad, H - 1), max(min(j0, j1) - pad, 0), min(max(j0, j1) + pad, W - 1))
+        prev = None
+        tiers = [(t, box) for t in (need, self.cfg.sim.robot_radius + TIGHT_GAP_M) for box in (window, (0, H - 1, 0, W - 1))]
+        for tight, (bi0, bi1, bj0, bj1) in tiers:
+            ok = clear >= tight
+            for (i, j), near in zip(((i0, j0), (i1, j1)), ends):  # the ends may sit in a tight spot: let the robot out
+                ok |= near & (clear >= min(float(clear[i, j]), tight) - 1e-6)
+                ok[i, j] = True
+            prev = {(i0, j0): None}
+            queue = deque([(i0, j0)])
+            while queue and (i1, j1) not in prev:
+                i, j = queue.popleft()
+                for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)):
+                    n = (i + di, j + dj)
+                    if bi0 <= n[0] <= bi1 and bj0 <= n[1] <= bj1 and n not in prev and ok[n]:
+                        prev[n] = (i, j)
+                        queue.append(n)
+            if (i1, j1) in prev:
+                break
         if (i1, j1) not in prev:
             self._local_cache[key] = straight
             return straight
@@ -573,8 +586,8 @@ class Loop:
         while keep[-1] < len(xy) - 1:
             k = keep[-1]
             cand = np.arange(k + 1, len(xy))
-            clear = segment_clearance_np(np.repeat(xy[k : k + 1], len(cand), 0), xy[cand], obs)
-            good = cand[clear >= need * 0.999]
+            sight = segment_clearance_np(np.repeat(xy[k : k + 1], len(cand), 0), xy[cand], obs)
+            good = cand[sight >= tight * 0.999]
             keep.append(int(good.max()) if len(good) else k + 1)
         out = xy[keep].astype(np.float32)
         self._local_cache[key] = out
@@ -738,8 +751,9 @@ class Loop:
 
     def approach_points(self, st: EpisodeState, o: int, pose) -> np.ndarray:
         """(1, 2) where to stop by object o: `approach_gap` from its footprint on the robot's side; where that
-        spot is no room for the robot (another object, a wall), the nearest free spot of a ring of stops
-        around the footprint. The leg is driven with the local planner (drive_points)."""
+        spot is no room for the robot (another object, a wall) or cannot be got to (`way_exists`: a pocket
+        between furniture, the far side of a wall), the nearest such spot of a ring of stops around the
+        footprint. The leg is driven with the local planner (drive_points)."""
         obj = self.scenes[st.ep.scene].objects[o]
         c = np.asarray(obj.position[:2], np.float32)
         half = np.asarray(obj.size[:2], np.float32) / 2
@@ -755,11 +769,36 @@ class Loop:
         ring = approach_ring(c, half, gap)  # (R, 2) stops at `gap` from the footprint
         cand = np.concatenate([goal[None], ring])
         free = segment_clearance_np(cand, cand, self.obstacles[st.b]) >= self._need()
-        if free[0] or not free.any():
+        if not free.any():
             return goal[None]
-        ring, ok = cand[1:], free[1:]
-        d = np.linalg.norm(ring - pose[None, :2], axis=1)
-        return ring[np.argmin(np.where(ok, d, np.inf))][None]
+        d = np.where(free, np.linalg.norm(cand - pose[None, :2], axis=1), np.inf)
+        d[0] = 0.0 if free[0] else np.inf  # the spot on the robot's side first
+        order = [k for k in np.argsort(d, kind="stable") if np.isfinite(d[k])]
+        for k in order:  # the nearest stop the robot can get to
+            if self.way_exists(st.b, pose[:2], cand[k]):
+                return cand[k][None]
+        return cand[order[0]][None]
+
+    def way_exists(self, b: int, a: np.ndarray, c: np.ndarray) -> bool:
+        """The local planner's grid joins a and c: some free region it lets the robot leave a by (see
+        `_local`'s escape) is one it lets the robot reach c by, through passages the robot just fits."""
+        from scipy import ndimage
+
+        lo, clear = self._grid(b)
+        tight = self.cfg.sim.robot_radius + TIGHT_GAP_M
+        if (b, "labels") not in self._grids:
+            self._grids[b, "labels"] = ndimage.label(clear >= tight, structure=np.ones((3, 3), bool))[0]
+        labels, (H, W) = self._grids[b, "labels"], clear.shape
+        r = int(ESCAPE_M / GRID_M)
+
+        def regions(p) -> set:
+            i, j = (int(np.clip(round((x - o) / GRID_M), 0, n - 1)) for x, o, n in zip(p, lo, (H, W)))
+            win = np.ogrid[max(i - r, 0) : min(i + r + 1, H), max(j - r, 0) : min(j + r + 1, W)]
+            disc = (win[0] - i) ** 2 + (win[1] - j) ** 2 <= r**2
+            ok = disc & (clear[tuple(win)] >= min(float(clear[i, j]), tight) - 1e-6)
+            return set(np.unique(labels[tuple(win)][ok]).tolist()) - {0}
+
+        return bool(regions(a) & regions(c))
 
     def approach_route(self, st: EpisodeState, pose: np.ndarray, stop: np.ndarray) -> np.ndarray:
         """(n, 2) waypoints from the robot's position to an approach stop: straight where the segment is

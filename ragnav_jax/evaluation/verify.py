@@ -11,7 +11,8 @@ against that:
 
 - name: the target's head noun against the object's names (what the robot calls it now, and every
   alias its memory learnt for it: `name_classes`). When the house's own vocabulary holds the head noun,
-  only objects known by that word pass ("chair" is not the office chair); otherwise through the
+  only objects known by that word or a name the memory learnt it means pass ("chair" is not the office
+  chair, "cot" is a crib where the memory once called one so); otherwise through the
   sentence encoder: the cosine must reach `tau_head` and lie within `head_margin` of the best match
   among the names recorded in the scene ("couch" finds the sofa, "appliance" the fridge, "aquarium"
   the fish tank);
@@ -25,7 +26,10 @@ against that:
   which is easier than which room of the house is; the gate keeps a lone lamp in the hall out;
 - structured checks: coordinate hints, sensor thresholds and superlatives (ranked among the recorded
   instances that pass the same checks), relations by position against recorded anchors that pass the
-  name and attribute checks (an anchor the memory never recorded leaves a relation unchecked).
+  name and attribute checks (an anchor the memory never recorded leaves a relation unchecked);
+- a goal measured by a sensor, under a head noun the house never uses, that no recorded object passes:
+  the name is checked among the objects that pass everything else, where the best-named pass. The
+  reading singles the object out where the encoder does not know that a soldering station is a tool.
 
 RAGNav's pre-check (`contradicts`) reads the memory's own, distant descriptions instead, where
 attributes are often left unsaid: there an attribute rules an instance out only when another value of
@@ -142,6 +146,14 @@ def said(attr: str, text: str) -> bool:
     return bool(find_words(attr, text)) or ("-" in attr and bool(find_words(attr.split("-")[0], text)))
 
 
+def attributes_seen(t: Target, looks: Sequence[Sequence[Perceived]]) -> np.ndarray:
+    """(len(looks),) bool: every attribute of t is said in one of each object's looks."""
+    ok = np.ones(len(looks), bool)
+    for a in t.attributes:
+        ok &= np.array([any(said(a, p.text) for p in ls) for ls in looks], bool)
+    return ok
+
+
 # ----------------------------------------------------------------------------------------------------
 # The check
 
@@ -178,11 +190,14 @@ class Verifier:
         return self.vectors(list(a)) @ self.vectors(list(b)).T
 
     # -- the three encoder checks
-    def names_match(self, head: str, names: Sequence[Sequence[str]], vocab: Sequence[str]) -> np.ndarray:
+    def names_match(self, head: str, names: Sequence[Sequence[str]], vocab: Sequence[str],
+                    classes: dict | None = None) -> np.ndarray:
         """(len(names),) bool: the head noun names these objects, each known by a set of names (what the robot
-        calls it now and what its memory called the same instance); vocab: every name recorded in the scene."""
-        exact = np.array([head in ns for ns in names], bool)
-        if head in vocab:  # the house's own word for it: trust the memory's naming
+        calls it now and what its memory called the same instance); vocab: every name recorded in the scene;
+        classes: name -> the names the memory learnt mean the same (`name_classes`)."""
+        heads = (classes or {}).get(head, {head})
+        exact = np.array([bool(heads & set(ns)) for ns in names], bool)
+        if head in vocab:  # the house's own word for it (or a word its memory learnt means it): trust its naming
             return exact
         flat = sorted({n for ns in names for n in ns})
         if not flat:
@@ -200,15 +215,13 @@ class Verifier:
         return bool(ds) and float(self.cos([attr], ds).max()) >= self.p.tau_kind
 
     def target_fits(self, t: Target, looks: Sequence[Sequence[Perceived]], vocab: Sequence[str],
-                    aliases: Sequence[Sequence[str]] | None = None) -> np.ndarray:
+                    aliases: Sequence[Sequence[str]] | None = None, classes: dict | None = None) -> np.ndarray:
         """(len(looks),) bool: name and attributes (no relations) of t fit each object's close-range looks;
-        aliases: the names the memory recorded for each object. At close range an attribute must be seen:
-        said in one of the looks."""
+        aliases: the names the memory recorded for each object; classes: as in `names_match`. At close range
+        an attribute must be seen: said in one of the looks."""
         aliases = aliases if aliases is not None else [()] * len(looks)
-        ok = self.names_match(t.head, [{p.name for p in ls} | set(a) for ls, a in zip(looks, aliases)], vocab)
-        for a in t.attributes:
-            ok &= np.array([any(said(a, p.text) for p in ls) for ls in looks], bool)
-        return ok
+        ok = self.names_match(t.head, [{p.name for p in ls} | set(a) for ls, a in zip(looks, aliases)], vocab, classes)
+        return ok & attributes_seen(t, looks)
 
     def room_scores(self, room: str, names: dict[str, Sequence[str]]) -> dict[str, float]:
         """Room id -> how well the room phrase fits the names the memory recorded there (mean cosine of its
@@ -254,12 +267,39 @@ class Verifier:
         return [tuple(perceive(rng, o, self.noise) for _ in range(self.looks)) for o in scene.objects]
 
     def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
-        """(O,) bool: each scene object, perceived as ps (its looks), passes the check for subgoal sg."""
+        """(O,) bool: each scene object, perceived as ps (its looks), passes the check for subgoal sg.
+
+        A goal measured by a sensor whose head noun the house never uses ("the tool in the workshop at about
+        167 degrees", where the encoder does not know a soldering station is a tool) and that no recorded
+        object passes is checked by name among the objects that pass everything else: those whose names fit
+        the head best pass (`best_named`)."""
+        objs = view.scene.objects
+        names = [view.names_of(i, ps[i]) for i in range(len(objs))]
+        named = self.target_fits(sg.target, ps, view.vocab, names, view.classes)
+        ok = self._constrained(view, sg, ps, named)
+        pool = list(view.known)
+        if sg.sensors and sg.target.head not in view.vocab and not ok[pool].any():
+            rest = self._constrained(view, sg, ps, attributes_seen(sg.target, ps), rank=False)
+            ok = self._constrained(view, sg, ps, rest & self.best_named(sg.target.head, names, rest, pool))
+        return ok
+
+    def best_named(self, head: str, names: Sequence[set[str]], among: np.ndarray, pool: Sequence[int]) -> np.ndarray:
+        """(O,) bool: objects whose best name fits the head at least as well as that of every recorded object
+        of `among` ((O,) bool)."""
+        flat = sorted({n for ns in names for n in ns})
+        c = dict(zip(flat, self.cos([head], flat)[0])) if flat else {}
+        score = np.array([max((c[n] for n in ns), default=-1.0) for ns in names])
+        rivals = [i for i in pool if among[i]]
+        return score >= (score[rivals].max() if rivals else -1.0) - 1e-6
+
+    def _constrained(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]], ok: np.ndarray,
+                     rank: bool = True) -> np.ndarray:
+        """(O,) bool: of the objects ok ((O,) bool: passing the name and attribute checks), those that pass
+        the relation, coordinate, sensor and room checks and (rank) the superlatives."""
         objs = view.scene.objects
         O = len(objs)
-        ok = self.target_fits(sg.target, ps, view.vocab, [view.names_of(i, ps[i]) for i in range(O)])
         pool = [i for i in view.known]
-        ok &= self.relations_hold(sg.target, view, ps)
+        ok = ok & self.relations_hold(sg.target, view, ps)
         if sg.location is not None:
             ok &= np.array([math.dist(o.position[:2], (sg.location.x, sg.location.y)) <= self.radius for o in objs])
         for c in sg.sensors:
@@ -272,7 +312,7 @@ class Verifier:
             ok &= np.array([bool(ok[i]) and o.room in self.rooms_match(sg.room, view, recorded | {o.room})
                             for i, o in enumerate(objs)])
         for c in sg.sensors:
-            if c.is_superlative:  # rank among the recorded instances passing the same checks (same room)
+            if rank and c.is_superlative:  # rank among the recorded instances passing the same checks (same room)
                 rivals = [i for i in set(pool) | set(np.flatnonzero(ok).tolist()) if ok[i]]
                 keep = np.zeros(O, bool)
                 for i in np.flatnonzero(ok):
@@ -291,7 +331,8 @@ class Verifier:
         objs, pool = view.scene.objects, list(view.known)
         ok = np.ones(len(objs), bool)
         for r in t.relations:
-            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.names_of(i, ps[i]) for i in pool])
+            fit = self.target_fits(r.anchor, [ps[i] for i in pool], view.vocab, [view.names_of(i, ps[i]) for i in pool],
+                                   view.classes)
             named = [i for i, f in zip(pool, fit) if f]
             if r.anchor.relations and named:
                 nested = self.relations_hold(r.anchor, view, ps)
@@ -310,17 +351,19 @@ class Verifier:
             return False
         ps = [Perceived(n.lower(), _strip_article(t.lower())) for n, t in zip(names, texts)]
         cls = classes or {}
-        if not self.names_match(sg.target.head, [{y for p in ps for y in cls.get(p.name, {p.name})}], vocab)[0]:
+        if not self.names_match(sg.target.head, [{y for p in ps for y in cls.get(p.name, {p.name})}], vocab, cls)[0]:
             return True  # no name the memory gave the instance (or its aliases) fits the target
-        fit = self.names_match(sg.target.head, [cls.get(p.name, {p.name}) for p in ps], vocab)
+        fit = self.names_match(sg.target.head, [cls.get(p.name, {p.name}) for p in ps], vocab, cls)
         return any(all(self.contradicted(a, p) for p, f in zip(ps, fit) if f) for a in sg.target.attributes)
 
 
 def name_classes(recorded_names: dict[int, Sequence[str]], share: float = 0.15) -> tuple[dict, dict]:
     """Names that mean the same thing, learnt from the memory: (name -> frozenset of its aliases, object ->
     its frequent names). Names said at least twice and for at least `share` of one instance's views are
-    aliases ('houseplant' and 'potted plant'); a rare confusion ('chair' for an armchair once) joins
-    nothing."""
+    aliases ('houseplant' and 'potted plant'). A name said rarely joins nothing, but where no object goes
+    by it frequently it means what the objects it was said of go by ('cot', said once of a crib, means
+    the cribs); a rare confusion with a name other objects go by ('chair' for an armchair once) means
+    only itself."""
     parent: dict[str, str] = {}
 
     def find(x: str) -> str:
@@ -337,7 +380,12 @@ def name_classes(recorded_names: dict[int, Sequence[str]], share: float = 0.15) 
     groups: dict[str, set[str]] = {}
     for x in list(parent):
         groups.setdefault(find(x), set()).add(x)
-    return {x: frozenset(groups[find(x)]) for x in parent}, frequent
+    out = {x: frozenset(groups[find(x)]) for x in parent}
+    rare: dict[str, set[str]] = {}
+    for i, ns in recorded_names.items():
+        for x in {n.lower() for n in ns} - set(frequent[i]) - set(parent):
+            rare.setdefault(x, {x}).update(out[frequent[i][0]])
+    return {**out, **{x: frozenset(ys) for x, ys in rare.items()}}, frequent
 
 
 def alias_sets(recorded_names: dict[int, Sequence[str]], classes: dict, frequent: dict) -> dict[int, tuple[str, ...]]:
