@@ -224,9 +224,19 @@ class Verifier:
         return ok & attributes_seen(t, looks)
 
     def room_scores(self, room: str, names: dict[str, Sequence[str]]) -> dict[str, float]:
-        """Room id -> how well the room phrase fits the names the memory recorded there (mean cosine of its
-        three best-matching names; chosen on the seen split, against whole-description embeddings)."""
-        return {r: float(np.sort(self.cos([room], list(ns))[0])[::-1][:3].mean()) for r, ns in names.items() if ns}
+        """Room id -> how well the room phrase fits the names the memory recorded there: the mean of its three
+        best names' distinctiveness, a name's cosine to the phrase less its mean cosine to the other room
+        types the summariser knows (seen: a shelf unit is close to every room and tells none apart). Chosen on
+        seen-split houses against the plain cosine and whole-description embeddings (the true room of a
+        type among the rooms holding one category: 0.88 against 0.78 and 0.65)."""
+        known = sorted(set(_summariser().rooms) - {room})
+        out = {}
+        for r, ns in names.items():
+            if ns:
+                ns = list(ns)
+                d = self.cos([room], ns)[0] - self.cos(known, ns).mean(0)
+                out[r] = float(np.sort(d)[::-1][:3].mean())
+        return out
 
     def rooms_match(self, room: str, view: SceneView, among: set[str] | None = None) -> set[str]:
         """Room ids the room phrase may mean: the rooms the forest's summariser labels with exactly that type
