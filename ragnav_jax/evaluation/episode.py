@@ -65,7 +65,7 @@ SAME_INSTANCE_M = 0.5  # a seen object this close to the retrieved instance's es
 TIGHT_PENALTY = 10.0  # driving-path cost factor of map edges that pass closer to an obstacle than the robot's radius
 GRID_M = 0.05  # occupancy grid of the local planner (metres per cell)
 GRID_MARGIN_M = 0.04  # clearance beyond the robot's radius the local planner keeps
-GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches first (then the whole house)
+GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches first (approaches: then the whole house)
 TIGHT_GAP_M = 0.0  # clearance beyond the robot's radius of the passages the local planner tries last
 ESCAPE_M = 0.3  # metres around a leg's ends where the local planner may pass cells as tight as the end itself
 CANDIDATE_DEPTH = 8  # ranked nodes per candidate slot searched for distinct instances
@@ -532,13 +532,15 @@ class Loop:
             self._grids[b] = (lo.astype(np.float32), clear.reshape(len(xs), len(ys)))
         return self._grids[b]
 
-    def _local(self, b: int, a: np.ndarray, c: np.ndarray) -> np.ndarray:
-        """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS over cells
-        that clear the robot with a margin, within a window around the segment, else over the whole house;
-        then the same through passages the robot just fits; shortcut by line of sight); the straight segment
-        when none is found. Within ESCAPE_M of either end a cell as clear as that end passes too, so a robot
-        parked in a tight spot (between a bin and a wall) can leave it."""
-        key = (b, *np.round(a, 3), *np.round(c, 3))
+    def _local(self, b: int, a: np.ndarray, c: np.ndarray, anywhere: bool = False) -> np.ndarray:
+        """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS within a
+        window around the segment over cells that clear the robot with a margin, then through passages it
+        just fits; with `anywhere` (approaches, which go where no map edge leads), then the same over the
+        whole house; shortcut by line of sight); the straight segment when none is found (a map edge the
+        window finds no way along is driven as the map has it). Within ESCAPE_M of either end a cell as
+        clear as that end passes too, so a robot parked in a tight spot (between a bin and a wall) can
+        leave it."""
+        key = (b, *np.round(a, 3), *np.round(c, 3), anywhere)
         if key in self._local_cache:
             return self._local_cache[key]
         obs, need = self.obstacles[b], self._need()
@@ -556,7 +558,8 @@ class Loop:
         pad = int(GRID_WINDOW_M / GRID_M)
         window = (max(min(i0, i1) - pad, 0), min(max(i0, i1) + pad, H - 1), max(min(j0, j1) - pad, 0), min(max(j0, j1) + pad, W - 1))
         prev = None
-        tiers = [(t, box) for t in (need, self.cfg.sim.robot_radius + TIGHT_GAP_M) for box in (window, (0, H - 1, 0, W - 1))]
+        boxes = (window, (0, H - 1, 0, W - 1)) if anywhere else (window,)
+        tiers = [(t, box) for box in boxes for t in (need, self.cfg.sim.robot_radius + TIGHT_GAP_M)]
         for tight, (bi0, bi1, bj0, bj1) in tiers:
             ok = clear >= tight
             for (i, j), near in zip(((i0, j0), (i1, j1)), ends):  # the ends may sit in a tight spot: let the robot out
@@ -810,7 +813,7 @@ class Loop:
             return direct
         if segment_clearance_np(here[None], stop[None], self.obstacles[st.b])[0] >= self._need():
             return direct
-        around = self._local(st.b, here, stop)
+        around = self._local(st.b, here, stop, anywhere=True)
         if len(around) > 2:  # a grid path near the segment (a plant, a chair): no detour over the map
             return around
         a, t = self.attach(st.b, here), self.attach(st.b, stop)
