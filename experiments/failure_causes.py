@@ -39,7 +39,7 @@ def check_parts(v: Verifier, view, sg, ps, k: int) -> list[str]:
     """The parts of the check that fail on scene object k (its looks ps[k])."""
     t, o = sg.target, view.scene.objects[k]
     bad = []
-    if not v.names_match(t.head, [{p.name for p in ps[k]} | view.names_of(k, ps[k])], view.vocab)[0]:
+    if not v.names_match(t.head, [{p.name for p in ps[k]} | view.names_of(k, ps[k])], view.vocab, view.classes)[0]:
         bad.append("name")
     if not all(any(said(a, p.text) for p in ps[k]) for a in t.attributes):
         bad.append("attributes")

@@ -662,8 +662,8 @@ class Loop:
         if not self.spec.search or st.e >= len(self.search) or g >= len(self.search[st.e]):
             return None
         left = [n for n in self.search[st.e][g] if (g, n) not in st.looked]
-        cost = self.euclid if self.spec.straight else self.cost
-        return min(left, key=lambda n: cost[st.b][st.node, n]) if left else None
+        cost = self.order_cost(st.b)
+        return min(left, key=lambda n: cost[st.node, n]) if left else None
 
     def goal_object(self, st: EpisodeState, g: int):
         sc = self.scenes[st.ep.scene]

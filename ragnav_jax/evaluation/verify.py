@@ -308,7 +308,7 @@ class Verifier:
         the relation, coordinate, sensor and room checks and (rank) the superlatives."""
         objs = view.scene.objects
         O = len(objs)
-        pool = [i for i in view.known]
+        pool = list(view.known)
         ok = ok & self.relations_hold(sg.target, view, ps)
         if sg.location is not None:
             ok &= np.array([math.dist(o.position[:2], (sg.location.x, sg.location.y)) <= self.radius for o in objs])
