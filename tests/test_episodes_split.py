@@ -19,7 +19,7 @@ def unseen_scene():
 
 
 @pytest.mark.parametrize("split", ["unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5",
-                                   "unseen_dev6", "unseen_dev7", "unseen"])
+                                   "unseen_dev6", "unseen_dev7", "unseen_dev8", "unseen"])
 def test_unseen_episodes_are_deterministic_and_resolve(unseen_scene, split):
     cfg = load_config(None, [*SMALL, f"episodes.split={split}"])
     a = generate_episodes([unseen_scene], cfg.episodes, seed=3)

@@ -1,30 +1,26 @@
-"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split.
+"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set E).
 
-Measured once after parser round 8 and never developed against.
+Written after parser round 8, before round 9 was developed (on set D, now `unseen_dev8`), by a seventh author
+who does not write parser rules; measured, never developed against. Same four functions, arguments and
+meanings as the other template sets. The style is notes left for the robot by the people of a shared house:
 
-Written by a sixth author who never read the rule parser, to measure how far it generalises. Same four
-functions, arguments and meanings as the other template sets. The style is messages typed into a home-robot
-phone app by the people of one household:
+- a chatty flatmate: existentials and asides ("There's a lamp in the study that's been switched on, could
+  you find it?", "I think the kettle is in the kitchen, go and look"), order as "before anything else",
+  "save X for last", "do X before Y", "while you're at it" (free);
+- a landlord taking inventory: telegraphic, one line per stop ("1. The kettle in the kitchen\n2. The bean bag,
+  the teal one, near the crib. Order as listed."), "/" between stops, "Check: ...", "Any order.";
+- an engineer: symbols and abbreviations ("kettle @ kitchen", "temp > 20°C", "x=3.5,y=2", "1/ ... 2/ ...",
+  "->", "order: strict", "order: any");
+- a grandparent dictating: long sentences joined by "and then", numbers in words, "the one that is".
 
-- a parent in a hurry: terse, everything packed into one noun phrase ("the teal corduroy bean bag by the
-  crib", "the games room's vintage jukebox", "the kettle (kitchen)"), "A, then B, then C. In that order.",
-  "A → B → C", "Any order.";
-- a teenager: lowercase, "rn", "plz", "u", "then the", "idc what order", full stops instead of lists, and
-  now and then the order backwards ("check B rn. but before that find A": A is visited first);
-- an older relative: polite and wordy ("Would you be so kind as to ...", "once you have done that",
-  "and to finish, ...", "I'm not fussy about the order");
-- a tidy-minded person: semicolon lists and numbered steps ("In this order: 1) ...; 2) ...; 3) ...").
-
-Goals: attributes before the noun exactly as given; states ("switched on", "open", "empty") before the noun,
-in a relative clause ("that's currently switched on") or in brackets right after the noun; the room as
-"in the X", "(X)" or a possessive ("the nursery's ..."), always before any relation so that nothing after
-an anchor can attach to it; anchors with their own relation take a relative clause ("next to the credenza
-that's itself near the harp", "by the shelf unit that has the work light"). Readings: digits, words
-("twenty-two", "minus eighteen"), decimals ("20.0", ".35", "0.40"), "°C", "deg", "degrees", "C", "%",
-"percent", "per cent"; comparatives in everyday words ("hotter than", "at 20 °C or more", "no warmer than",
-"scoring under .3 on NDVI", "at 52 deg, give or take"); superlatives as adjectives ("the coldest", "the least
-healthy") or tails ("with the lowest humidity", "that's running hottest").
-Coordinates: "(3.5, 2)", "x 3.5 y 2", "x=3.5, y=2", "3.5/2", "[3.5, 2]", "x: 3.5, y: 2", always x then y.
+Goals: attributes before the noun, after it ("the bean bag, the teal corduroy one") or comma-separated ("the
+teal, corduroy bean bag"); states before the noun ("the open toy chest", "the switched-on lamp") or after it
+("that's been switched on", "that's still open"); the room as "in the X", "over in the X", "down in the X",
+a possessive, or a noun modifier ("the kitchen kettle"); relations in new words ("right by", "up against",
+"a little way from", "across the room from", "on top of", "underneath", "that's got"). Readings: digits,
+words, decimals, "°C", "ºC", "C", "degrees", "%", "percent", symbols (">", "<", ">=", "<=", "≥", "≤", "~",
+"≈"); superlatives as "whichever X is hottest", "the hottest one", "the one reading lowest". Coordinates:
+"@ 3.5,2", "at 3.5, 2", "near (3.5, 2)", "at x 3.5 / y 2", "at (x: 3.5, y: 2)", "at x≈3.5, y≈2", always x then y.
 
 Every draw comes from the NumPy generator passed in, so a seed gives the same text.
 """
@@ -34,135 +30,66 @@ from __future__ import annotations
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.phrasings_dev8 import _and, is_plural, number_words, split_attributes
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
-
-# ----------------------------------------------------------------------------------------------------
-# Small helpers
-
-_ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
-         "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen")
-_TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
-
-
-def number_words(n: int) -> str:
-    """An integer in [-99, 99] in words: 22 -> 'twenty-two', -18 -> 'minus eighteen'."""
-    if n < 0:
-        return "minus " + number_words(-n)
-    if n < 20:
-        return _ONES[n]
-    t, o = divmod(n, 10)
-    return _TENS[t] + ("" if o == 0 else "-" + _ONES[o])
-
-
-def split_attributes(t: Target) -> tuple[list[str], list[str]]:
-    """(attributes written before the noun, states) of a target: the phrase holds the former in order."""
-    mods = t.phrase[: len(t.phrase) - len(t.head)].split() if t.phrase.endswith(t.head) else t.phrase.split()
-    pre, states, i = [], [], 0
-    for a in t.attributes:
-        w = a.split()
-        if w and mods[i : i + len(w)] == w:
-            pre.append(a)
-            i += len(w)
-        else:
-            states.append(a)
-    return pre, states
-
-
-def _and(items: list[str]) -> str:
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
-
 
 # ----------------------------------------------------------------------------------------------------
 # Relations and anchors
 
 _REL = {
-    "near": ("near", "close to", "not far from"),
-    "next_to": ("next to", "alongside", "just next to"),
-    "beside": ("beside", "just beside"),
-    "by": ("by", "just by"),
-    "on": ("on", "on top of", "sitting on"),
-    "under": ("under", "underneath", "beneath"),
-    "above": ("above", "hanging above"),
+    "near": ("near", "a little way from", "close by", "in the vicinity of"),
+    "next_to": ("next to", "right next to", "up against"),
+    "beside": ("beside", "right beside"),
+    "by": ("by", "right by", "over by"),
+    "on": ("on", "on top of", "resting on"),
+    "under": ("under", "underneath", "below"),
+    "above": ("above", "up above"),
     "in": ("in", "inside"),
-    "with": ("with",),
-    "in_room_with": ("in the same room as", "in the room with"),
-    "in_front_of": ("in front of",),
-    "behind": ("behind", "just behind"),
-    "opposite": ("opposite", "across from", "facing"),
-    "left_of": ("to the left of", "left of"),
-    "right_of": ("to the right of",),
+    "with": ("with", "that's got"),
+    "in_room_with": ("in the same room as",),
+    "in_front_of": ("in front of", "just in front of"),
+    "behind": ("behind", "round the back of"),
+    "opposite": ("opposite", "across the room from", "facing"),
+    "left_of": ("to the left of", "on the left of"),
+    "right_of": ("to the right of", "on the right of"),
 }
 
 
-def is_plural(head: str) -> bool:
-    """'shelves', 'drums' take 'that are'; 'cactus', 'glass', 'iris' do not."""
-    w = head.split()[-1] if head.split() else head
-    return w.endswith("s") and not w.endswith(("ss", "us", "is", "ics"))
+def _state_words(state: str, before: bool) -> str:
+    """A state as written: hyphenated before the noun ('switched-on'), or as it is."""
+    if before and " " in state:
+        return state.replace(" ", "-")
+    return state
 
 
-def _rel_words(rng, r: Relation) -> str:
-    """The words of a relation; 'in the same room as' before an anchor with a clause of its own, so the
-    clause cannot be read as the room's."""
-    if r.type == "in_room_with" and r.anchor.relations:
-        return "in the same room as"
-    return _pick(rng, _REL[r.type])
-
-
-def _that_is(rng, plural: bool, extra: tuple[str, ...] = ()) -> str:
-    opts = ("that are", "which are", "that are" ) if plural else ("that is", "that's", "which is")
-    return _pick(rng, opts + tuple(f"{opts[0]} {e}" for e in extra))
-
-
-def _that_has(rng, plural: bool) -> str:
-    return _pick(rng, ("that have", "which have") if plural else ("that has", "which has"))
+def _rel(rng, r: Relation, plural: bool) -> str:
+    """A relation and its anchor: 'right by the crib', "that's got the work light", 'with the kettle'."""
+    a = _anchor(rng, r.anchor)
+    w = _pick(rng, _REL[r.type])
+    if w == "that's got" and plural:
+        w = "that have got"
+    return f"{w} {a}"
 
 
 def _anchor(rng, t: Target) -> str:
-    """An anchor noun phrase: a state before a bare noun ('the switched off steam iron') or in brackets after
-    a modified one ('the burgundy tumble dryer (switched on)'); its own relations as a relative clause."""
+    """An anchor noun phrase: a state before a bare noun or after it ('the lamp, still switched on,'), its own
+    relations as a clause ('the credenza, which is next to the harp')."""
     pre, states = split_attributes(t)
     plural = is_plural(t.head)
-    if states and not pre and len(states) == 1:
-        s = f"the {states[0]} {t.phrase}"
+    if len(states) == 1 and not pre:
+        s = f"the {_state_words(states[0], True)} {t.phrase}"
     elif states:
-        s = f"the {t.phrase} ({' and '.join(states)})"
+        s = f"the {t.phrase} that {'are' if plural else 'is'} {' and '.join(states)}"
     else:
         s = f"the {t.phrase}"
-    rels = list(t.relations)
-    if not rels:
+    if not t.relations:
         return s
-    if len(rels) == 1 and rels[0].type == "with" and not rels[0].anchor.relations and rng.uniform() < 0.5:
-        return f"{s} with {_anchor(rng, rels[0].anchor)}"
-    rels.sort(key=lambda r: bool(r.anchor.relations))  # a clause-bearing anchor goes last
-    parts = []
-    for i, r in enumerate(rels):
-        a = _anchor(rng, r.anchor)
-        if r.type == "with":
-            parts.append(f"{_that_has(rng, plural) if i == 0 else ('have' if plural else 'has')} {a}")
-        else:
-            lead = _that_is(rng, plural, ("itself",) if not plural else ()) if i == 0 else ""
-            parts.append(f"{lead} {_rel_words(rng, r)} {a}".strip())
-    return f"{s} " + " and ".join(parts)
-
-
-def _relations(rng, t: Target) -> str:
-    """The target's relations, after everything else in the goal: a prepositional phrase or a clause."""
-    rels = sorted(t.relations, key=lambda r: bool(r.anchor.relations))
-    plural = is_plural(t.head)
-    if len(rels) == 1:
-        r = rels[0]
-        a = _anchor(rng, r.anchor)
-        if r.type == "with":
-            return _pick(rng, (f"with {a}", f"with {a}", f"{_that_has(rng, plural)} {a}"))
-        if r.type == "on" and rng.uniform() < 0.3:
-            return f"{_pick(rng, ('sitting on', 'standing on', 'resting on'))} {a}"
-        if rng.uniform() < 0.7:
-            return f"{_rel_words(rng, r)} {a}"
-        return f"{_that_is(rng, plural)} {_rel_words(rng, r)} {a}"
-    be, have = ("are", "have") if plural else ("is", "has")
-    parts = [f"{have} {_anchor(rng, r.anchor)}" if r.type == "with" else f"{be} {_rel_words(rng, r)} {_anchor(rng, r.anchor)}"
-             for r in rels]
-    return "that " + " and ".join(parts[:-1]) + " and also " + parts[-1]
+    parts = [_rel(rng, r, plural) for r in t.relations]
+    be = "are" if plural else "is"
+    have = "have got" if plural else "has got"
+    clause = " and ".join(have + p[len(p.split(" got")[0]) + 4:] if p.startswith("that") else
+                          p if p.startswith("with") else f"{be} {p}" for p in parts)
+    return f"{s}, which {clause},"
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -170,171 +97,128 @@ def _relations(rng, t: Target) -> str:
 
 
 def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
-    """A goal as a household member types it: 'the teal corduroy bean bag by the crib', 'the games room's
-    vintage jukebox', 'the toy chest (open) in the nursery', 'the heater in the pantry that's over 20 °C', 'the
-    coldest chest freezer in the garage', 'the guitar at x 3.5 y 2', 'the lamp next to the credenza that has
-    the record player'. Relations always come last, so nothing written after an anchor belongs to the goal.
+    """A goal as a housemate writes it: 'the bean bag, the teal corduroy one, right by the crib', 'the kitchen
+    kettle', 'the switched-on lamp over in the study', 'the teal, corduroy bean bag', 'whichever heater in the
+    pantry is hottest', 'the guitar @ 3.5,2'. Relations come last.
     """
     t = sg.target
     pre, states = split_attributes(t)
     plural = is_plural(t.head)
     room = sg.room
-    pre_noun = f"{prefix} " if prefix else ""
-    # room: possessive, bracketed straight after the noun, or "in the X" after the noun's own modifiers
+    head_words = t.phrase[len(t.phrase) - len(t.head):] if t.phrase.endswith(t.head) else t.head
+    # attributes: before the noun, after it as "the X one(s)", or comma-separated before it
+    attr_style = "before"
+    if pre and not prefix:
+        attr_style = _pick(rng, ("before", "before", "one", "comma" if len(pre) > 1 else "before"))
+    # room: after the noun, possessive, or a noun modifier when nothing else stands before the noun
     room_style = None
     if room:
-        room_style = _pick(rng, ("in", "in", "in", "possessive", "bracket"))
-    # states: before the noun (one state, no superlative adjective), in brackets, or a relative clause
-    state_style = None
-    if states:
-        before_ok = len(states) == 1 and not prefix and (not pre or " " not in states[0])  # not "switched off vintage"
-        opts = ["clause", "clause", "bracket"] + (["before"] if before_ok else [])
-        state_style = _pick(rng, opts)
-        if state_style == "bracket" and room_style == "bracket":
-            state_style = "clause"
+        opts = ["in", "in", "over", "down", "possessive"]
+        if not pre and not prefix and not (states and len(states) == 1):
+            opts.append("modifier")
+        room_style = _pick(rng, opts)
+    state_before = bool(states) and len(states) == 1 and not pre and not prefix and room_style != "modifier" \
+        and rng.uniform() < 0.4
     det = f"the {room}'s " if room_style == "possessive" else "the "
-    before = (states[0] + " ") if state_style == "before" else ""
-    s = det + pre_noun + before + t.phrase
-    post: list[tuple[str, str]] = []  # (kind, text) of the modifiers after the noun, in order
-    if state_style == "bracket":
-        s += " (" + " and ".join(states) + ")"
-    if room_style == "bracket":
-        s += f" ({_pick(rng, (room, 'in the ' + room))})"
-    if state_style == "clause":
-        post.append(("state", f"{_that_is(rng, plural, ('currently',))} {' and '.join(states)}"))
+    if room_style == "modifier":
+        det += room + " "
+    if prefix:
+        det += prefix + " "
+    if state_before:
+        det += _state_words(states[0], True) + " "
+    if attr_style == "one":
+        s = f"{det}{head_words}, the {' '.join(pre)} {'ones' if plural else 'one'},"
+    elif attr_style == "comma":
+        s = f"{det}{', '.join(pre)} {head_words}"
+    else:
+        s = det + t.phrase
+    post: list[str] = []
+    if states and not state_before:
+        be = "are" if plural else "'s"
+        adv = _pick(rng, ("", "been ", "still ")) if all(x.startswith("switched") for x in states) else \
+            _pick(rng, ("", "still "))
+        post.append(f"that{' ' if plural else ''}{be} {adv}{' and '.join(states)}")
     if hint:
-        post.append(("hint", hint))
-    if room_style == "in":
-        post.append(("room", f"in the {room}"))
+        post.append(hint)
+    if room_style in ("in", "over", "down"):
+        post.append({"in": "in the ", "over": "over in the ", "down": "down in the "}[room_style] + room)
     if tail:
-        if plural and tail.startswith("that's "):
-            tail = "that are " + tail[len("that's "):]
-        post.append(("tail", tail))
-    if t.relations:
-        post.append(("rel", _relations(rng, t)))
+        post.append(tail)
+    for i, r in enumerate(t.relations):
+        post.append(("and also " if i else "") + _rel(rng, r, plural))
     out = s
-    for i, (kind, text) in enumerate(post):
-        if i == 0:
-            out += " " + text
-        elif kind == "tail" and post[i - 1][0] == "room" and text.startswith(("that", "which", "whose", "with")):
-            out += ", the one " + text  # "the heater in the pantry, the one that's over 20 °C": not the pantry's
-        else:
-            out += ", " + text  # every further modifier restarts after a comma, so it belongs to the goal
-    return out
+    for i, p in enumerate(post):
+        sep = " " if i == 0 or out.endswith(",") or p.startswith("and also") else ", "
+        out += sep + p
+    return out.rstrip(" ,-").replace(",,", ",")
 
 
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases
 
-_TEMP_UNITS = ((" °C", "c"), ("°C", "c"), (" degrees", "c"), (" deg", "c"), (" degrees C", "c"), (" C", "c"),
-               (" degrees Celsius", "c"))
-_HUM_UNITS = (("%", "%"), (" %", "%"), (" percent", "%"), (" per cent", "%"))
+_T_UNITS = (("°C", "c"), (" °C", "c"), ("ºC", "c"), ("C", "c"), (" degrees", "c"), (" deg C", "c"))
+_H_UNITS = (("%", "%"), (" %", "%"), (" percent", "%"))
+_SYM = {"gt": (">", "above", "over"), "ge": (">=", "≥", "at or above"), "lt": ("<", "below", "under"),
+        "le": ("<=", "≤", "at or below"), "approx": ("~", "≈", "around")}
 
 
 def _number(rng, reading: str, value: float) -> tuple[str, float]:
-    """(the number as written, its value)."""
+    """(the number as written, its value): digits, one decimal place, words, or a bare leading point."""
     txt = _fmt_value(reading, value)
     v = float(txt)
     if reading == "ndvi":
-        if 0 < v < 1:
-            return _pick(rng, (txt, txt, txt[1:] if txt.startswith("0.") else txt, f"{v:.2f}")), v
-        return txt, v
+        return (txt[1:] if txt.startswith("0.") and rng.uniform() < 0.3 else txt), v
     if v == int(v):
         u = rng.uniform()
-        if u < 0.22 and abs(v) < 100:
+        if u < 0.2 and abs(v) < 100:
             return number_words(int(v)), v
-        if u < 0.34:
+        if u < 0.3:
             return f"{v:.1f}", v
-        if v < 0 and u < 0.5:
-            return f"minus {txt[1:]}", v
     return txt, v
 
 
-_TEMP_TAILS = {
-    "gt": ("that's warmer than {n}{u}", "running hotter than {n}{u}", "reading over {n}{u}", "at more than {n}{u}",
-           "with a temperature above {n}{u}", "that's above {n}{u}"),
-    "ge": ("at {n}{u} or more", "that's at least {n}{u}", "reading {n}{u} or higher", "that's no cooler than {n}{u}",
-           "with a temperature of at least {n}{u}", "at {n}{u} or warmer"),
-    "lt": ("that's colder than {n}{u}", "reading under {n}{u}", "at less than {n}{u}", "running cooler than {n}{u}",
-           "with a temperature below {n}{u}", "that's below {n}{u}"),
-    "le": ("at {n}{u} or less", "that's at most {n}{u}", "reading {n}{u} or lower", "that's no warmer than {n}{u}",
-           "with a temperature of at most {n}{u}", "at {n}{u} or colder"),
-    "approx": ("at about {n}{u}", "reading roughly {n}{u}", "that's around {n}{u}", "sitting at approximately {n}{u}",
-               "with a temperature of about {n}{u}", "at {n}{u}, give or take"),
+_SUPER = {
+    ("temperature_c", "max"): ("hottest", "warmest"), ("temperature_c", "min"): ("coldest", "coolest"),
+    ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy", "unhealthiest"),
+    ("humidity_pct", "max"): ("most humid", "dampest"), ("humidity_pct", "min"): ("driest", "least humid"),
 }
-_HUM_TAILS = {
-    "gt": ("that's more humid than {n}{u}", "with humidity above {n}{u}", "reading over {n}{u} humidity",
-           "at more than {n}{u} humidity"),
-    "ge": ("with humidity of at least {n}{u}", "at {n}{u} humidity or more", "that's no drier than {n}{u}",
-           "reading {n}{u} humidity or higher"),
-    "lt": ("that's drier than {n}{u}", "with humidity below {n}{u}", "reading under {n}{u} humidity",
-           "that's less humid than {n}{u}"),
-    "le": ("with humidity of {n}{u} or less", "at most {n}{u} humidity", "that's no more humid than {n}{u}",
-           "reading {n}{u} humidity or lower"),
-    "approx": ("at about {n}{u} humidity", "with humidity around {n}{u}", "reading roughly {n}{u} humidity",
-               "with humidity of approximately {n}{u}"),
-}
-_NDVI_TAILS = {
-    "gt": ("with an NDVI above {n}", "whose NDVI is over {n}", "with NDVI higher than {n}", "scoring more than {n} on NDVI"),
-    "ge": ("with an NDVI of {n} or more", "with NDVI at least {n}", "whose NDVI is no lower than {n}",
-           "scoring {n} or higher on NDVI"),
-    "lt": ("with an NDVI under {n}", "whose NDVI is below {n}", "with NDVI less than {n}", "scoring under {n} on NDVI"),
-    "le": ("with an NDVI of {n} or less", "with NDVI at most {n}", "whose NDVI is no higher than {n}",
-           "scoring {n} or lower on NDVI"),
-    "approx": ("with an NDVI of about {n}", "whose NDVI is roughly {n}", "with NDVI around {n}",
-               "scoring approximately {n} on NDVI"),
-}
-_SUPER_PREFIX = {
-    ("temperature_c", "max"): ("warmest", "hottest"),
-    ("temperature_c", "min"): ("coldest", "chilliest"),
-    ("ndvi", "max"): ("healthiest", "lushest"),
-    ("ndvi", "min"): ("least healthy", "sickliest"),
-    ("humidity_pct", "max"): ("most humid", "dampest"),
-    ("humidity_pct", "min"): ("driest", "least humid"),
-}
-_SUPER_TAIL = {
-    ("temperature_c", "max"): ("with the highest temperature", "that's running hottest", "reading the highest temperature"),
-    ("temperature_c", "min"): ("with the lowest temperature", "that's running coldest", "reading the lowest temperature"),
-    ("ndvi", "max"): ("with the highest NDVI", "with the best NDVI score", "whose NDVI is highest"),
-    ("ndvi", "min"): ("with the lowest NDVI", "with the worst NDVI score", "whose NDVI is lowest"),
-    ("humidity_pct", "max"): ("with the highest humidity", "reading the most humid", "whose humidity is highest"),
-    ("humidity_pct", "min"): ("with the lowest humidity", "reading the driest", "whose humidity is lowest"),
-}
+_SUPER_READ = {"temperature_c": ("temperature", "temp"), "ndvi": ("NDVI",), "humidity_pct": ("humidity",)}
 
 
 def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
     """(prefix before the noun or '', phrase after the noun or '', the constraint exactly as written).
 
-    Superlatives: an adjective ('coldest', 'most humid', 'least healthy') or a tail ('with the lowest
-    humidity', 'that's running hottest'); thresholds: a tail that reads after the noun or after 'the one'
-    ('that's no warmer than 20 °C', 'at 45 percent humidity or more', 'with an NDVI of .35 or less',
-    'reading under minus eighteen degrees', 'at about 60%').
+    Superlatives: 'hottest' before the noun, or after it ('- the hottest one', 'that reads the lowest
+    humidity', 'with the highest temp'); thresholds after the noun in symbols or words ('reading > 20°C',
+    'with temp >= 45%', 'at or below minus eighteen degrees', 'NDVI ~ .35', 'with humidity under 40 percent').
     """
     rd = c.reading
     if c.is_superlative:
-        if rng.uniform() < 0.5:
-            return _pick(rng, _SUPER_PREFIX[(rd, c.comparator)]), "", c
-        return "", _pick(rng, _SUPER_TAIL[(rd, c.comparator)]), c
+        adj = _pick(rng, _SUPER[(rd, c.comparator)])
+        k = int(rng.integers(4))
+        if k == 0:
+            return adj, "", c
+        if k == 1:
+            return "", f"- the {adj} one -", c
+        hi = "highest" if c.comparator == "max" else "lowest"
+        return "", _pick(rng, (f"that reads the {hi} {_pick(rng, _SUPER_READ[rd])}",
+                               f"with the {hi} {_pick(rng, _SUPER_READ[rd])}")), c
     n, value = _number(rng, rd, c.value)
+    sym = _pick(rng, _SYM[c.comparator])
     if rd == "ndvi":
-        return "", _pick(rng, _NDVI_TAILS[c.comparator]).format(n=n), SensorConstraint(rd, c.comparator, value, "")
+        lead = _pick(rng, ("with NDVI", "NDVI", "with an NDVI"))
+        return "", f"{lead} {sym} {n}", SensorConstraint(rd, c.comparator, value, "")
     if rd == "temperature_c":
-        pat = _pick(rng, _TEMP_TAILS[c.comparator])
-        if "temperature" in pat and rng.uniform() < 0.3:
-            u, code = "", ""
-        else:
-            u, code = _pick(rng, _TEMP_UNITS)
-        if n[0].isalpha() and u.startswith("°"):  # "twenty °C" reads oddly: words take a spelled unit
-            u = " degrees"
-        return "", pat.format(n=n, u=u), SensorConstraint(rd, c.comparator, value, code)
-    pat = _pick(rng, _HUM_TAILS[c.comparator])
-    if pat.startswith("with humidity") and rng.uniform() < 0.3:
-        u, code = "", ""
-    else:
-        u, code = _pick(rng, _HUM_UNITS)
-    if n[0].isalpha() and "%" in u:
+        u, code = _pick(rng, _T_UNITS)
+        if n[0].isalpha():
+            u, code = " degrees", "c"
+        lead = _pick(rng, ("reading", "with temp", "with a temperature", "at a temperature"))
+        return "", f"{lead} {sym} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
+    u, code = _pick(rng, _H_UNITS)
+    if n[0].isalpha():
         u = " percent"
-    return "", pat.format(n=n, u=u), SensorConstraint(rd, c.comparator, value, code)
+    lead = _pick(rng, ("with humidity", "humidity", "at a humidity"))
+    return "", f"{lead} {sym} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -342,165 +226,91 @@ def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tupl
 
 
 def hint_text_heldout(rng: np.random.Generator, x: str, y: str) -> str:
-    """A coordinate hint in the scene frame (metres), x then y, as typed on a phone: '(3.5, 2)', 'at x 3.5 y
-    2', 'at x=3.5, y=2', 'around 3.5/2', 'at [3.5, 2]', 'at x: 3.5, y: 2', 'at position 3.5, 2'. Every form
-    reads straight after a noun.
-    """
-    return _pick(rng, (
-        f"({x}, {y})", f"at ({x}, {y})", f"at x {x} y {y}", f"at x={x}, y={y}", f"around {x}/{y}",
-        f"at [{x}, {y}]", f"at x: {x}, y: {y}", f"at position {x}, {y}", f"at roughly ({x}, {y})",
-        f"around x {x}, y {y}", f"at coords {x},{y}", f"at ({x} m, {y} m)",
-    ))
+    """A coordinate hint in the scene frame (metres), x then y: '@ 3.5,2', 'at 3.5, 2', 'near (3.5, 2)', 'at x
+    3.5 / y 2', 'at (x: 3.5, y: 2)', 'at x≈3.5, y≈2', 'located at 3.5 2'. Every form reads straight after a
+    noun."""
+    return _pick(rng, (f"@ {x},{y}", f"at {x}, {y}", f"near ({x}, {y})", f"at x {x} / y {y}", f"at (x: {x}, y: {y})",
+                       f"at x≈{x}, y≈{y}", f"located at {x} {y}", f"@ ({x}, {y})", f"at point ({x},{y})"))
 
 
 # ----------------------------------------------------------------------------------------------------
 # Whole instructions
 
-_VERBS = ("go to", "head to", "check on", "have a look at", "pop over to", "swing by", "stop at", "visit",
-          "go and look at", "find", "get over to", "look in on")
-_TEEN_VERBS = ("go to", "go check", "check", "swing by", "go see", "find", "head to")
-_WORDY_VERBS = ("go to", "visit", "look in on", "pop along to", "have a look at", "call in at", "make your way to")
+
+def _end(s: str) -> str:
+    s = s.strip().replace(" ,", ",").replace(",,", ",").replace(",.", ".").replace(",?", "?").replace(", -", " -")
+    return s if s.endswith((".", "?", "!")) else s + "."
 
 
-def _finish(s: str, cap: bool = True) -> str:
-    s = s.strip().replace(" ,", ",").replace(",,", ",").replace(",.", ".").replace(",?", "?").replace(",;", ";")
-    if not s.endswith((".", "?", "!")):
-        s += "."
-    return s[0].upper() + s[1:] if cap else s
+def _cap(s: str) -> str:
+    return s[0].upper() + s[1:]
 
 
-def _risky(res: list[str]) -> bool:
-    """Goals whose text would blur a plain comma / 'and' list: inner commas, 'and', brackets, clauses, anchors."""
-    return any(("," in r or " and " in r or " with " in r or "(" in r or " that" in r or " which" in r
-                or len(r.split()) > 5) for r in res)
-
-
-def _short(r: str) -> bool:
-    """A goal plain enough to take 'first' / 'last' after it without the word reading as part of it."""
-    return len(r.split()) <= 4 and not any(ch.isdigit() for ch in r) and "(" not in r and " that" not in r
-
-
-def _lower_start(s: str) -> str:
-    return s if s.startswith("I ") else s[0].lower() + s[1:]
-
-
-def _parent(rng, res: list[str], order: str) -> str:
-    v = _pick(rng, ("", "", "check ", "go to ", "visit "))
+def _flatmate(rng, res: list[str], order: str) -> str:
+    ask = _pick(rng, ("could you find it?", "can you go and check on it?", "go and have a look, would you?"))
     n = len(res)
     if n == 1:
-        return _finish(f"{v}{res[0]}" + _pick(rng, ("", "", ". Asap", ". Quick please", " please")))
-    if order == "strict":
-        k = int(rng.integers(4))
-        if k == 0:
-            if _short(res[0]):
-                return _finish(f"{v}{res[0]} first" + "".join(f", then {r}" for r in res[1:])) + " In that order."
-            return _finish(f"first {v}{res[0]}" + "".join(f", then {r}" for r in res[1:])) + " In that order."
-        if k == 1:
-            return _finish(" → ".join(res)) + _pick(rng, (" In that order.", " Strictly in that order."))
-        if k == 2:
-            mid = "".join(f", then {r}" for r in res[1:-1])
-            end = f", {res[-1]} last" if _short(res[-1]) else f", and last of all {res[-1]}"
-            return _finish(f"first {v}{res[0]}{mid}{end}")
-        return _finish(f"{v}{res[0]}" + "".join(f", after that {r}" for r in res[1:])) + " Keep to that order."
-    if _risky(res):
-        return _finish("; ".join(res)) + _pick(rng, (" Any order.", " Order doesn't matter.", " Whatever order."))
-    lst = ", ".join(res[:-1]) + " and " + res[-1]
-    return _finish(f"{v}{lst}") + _pick(rng, (" Any order.", " Order doesn't matter.", " Whatever order is quickest."))
-
-
-def _teen(rng, res: list[str], order: str) -> str:
-    v = _pick(rng, _TEEN_VERBS)
-    please = _pick(rng, (" plz", " pls", " rn", " rn plz", ""))
-    n = len(res)
-    if n == 1:
-        s = _pick(rng, (f"{v} {res[0]}{please}", f"can u {v} {res[0]}{please}", f"yo {v} {res[0]}{please}"))
-        return s.lower().rstrip(",")
-    if order == "strict":
-        k = int(rng.integers(4))
-        if k == 0:
-            if _risky(res):
-                s = f"first {v} {res[0]}" + "".join(f". then {r}" for r in res[1:]) + please
-            elif _short(res[0]):
-                s = f"{v} {res[0]} first" + "".join(f" then {r}" for r in res[1:]) + please
-            else:
-                s = f"first {v} {res[0]}" + "".join(f" then {r}" for r in res[1:]) + please
-        elif k == 1:
-            s = f"can u {v} {res[0]}{please}. after that {res[1]}" + "".join(f". then {r}" for r in res[2:])
-            s += ". in that order"
-        elif k == 2 and n == 2:
-            s = f"{v} {res[1]}{please}. but before that {_pick(rng, _TEEN_VERBS)} {res[0]}"
-        else:
-            s = f"first {res[0]}. then {res[1]}" + "".join(f". then {r}" for r in res[2:]) + f". that order{please}"
-        return s.lower()
-    free = _pick(rng, ("any order is fine", "idc what order", "order doesnt matter", "whatever order u want"))
-    if n == 2 and rng.uniform() < 0.4:
-        free = _pick(rng, ("idc which one first", "doesnt matter which first"))
-    if _risky(res):
-        s = f"{v} {res[0]}. also {res[1]}" + "".join(f". also {r}" for r in res[2:]) + f"{please}. {free}"
-    else:
-        s = f"{v} {', '.join(res[:-1])} and {res[-1]}{please}, {free}"
-    return s.lower()
-
-
-def _wordy(rng, res: list[str], order: str) -> str:
-    v = _pick(rng, _WORDY_VERBS)
-    open_ = _pick(rng, ("Would you be so kind as to", "Would you be a dear and", "I wonder if you could",
-                        "Could you possibly"))
-    thanks = _pick(rng, (" Thank you ever so much.", " Many thanks.", " Thank you, dear.", ""))
-    n = len(res)
-    if n == 1:
-        return _finish(f"{open_} {v} {res[0]}?") + thanks
+        return _pick(rng, (_cap(_end(f"there's {res[0]}, {ask}")),
+                           _cap(_end(f"could you nip over to {res[0]}?")),
+                           _cap(_end(f"I need you at {res[0]}"))))
     if order == "strict":
         k = int(rng.integers(3))
         if k == 0:
-            if n == 2:
-                s = f"{open_} first {v} {res[0]}, and once you have done that, {res[1]}"
-            else:
-                s = f"{open_} first {v} {res[0]}; once you have done that, {res[1]}"
-                s += "".join(f"; after that, {r}" for r in res[2:-1]) + f"; and to finish, {res[-1]}"
-            return _finish(s + "?") + thanks
-        if k == 1:
-            sep = "; " if _risky(res) else ", "
-            s = f"To begin with, {_lower_start(open_)} {v} {res[0]}" + "".join(f"{sep}then {r}" for r in res[1:-1])
-            s += f"{sep}and, at the very end, {res[-1]}" if n > 2 else f"{sep}and after that {res[-1]}"
-            return _finish(s + "?") + " Please keep to that order." + thanks
-        steps = [f"To start with, {_lower_start(open_)} {v} {res[0]}?"]
-        steps += [f"After that, please {_pick(rng, _WORDY_VERBS)} {r}." for r in res[1:-1]]
-        steps += [f"And lastly, {_pick(rng, _WORDY_VERBS)} {res[-1]}."]
-        return " ".join(_finish(x) for x in steps) + thanks
-    free = _pick(rng, ("I'm not fussy about the order.", "The order makes no difference to me.",
-                       "Do them in whichever order suits you.", "Any order will do."))
-    if n == 2:
-        s = f"{open_} {v} {res[0]}, and also {res[1]}" if _risky(res) else f"{open_} {v} {res[0]} and {res[1]}"
-    elif _risky(res):
-        s = f"{open_} {v} {res[0]}" + "".join(f"; and {r}" if i == n - 2 else f"; {r}" for i, r in enumerate(res[1:]))
-    else:
-        s = f"{open_} {v} {_and(res)}"
-    return _finish(s + "?") + " " + free + thanks
+            s = f"Before anything else, go to {res[0]}."
+            s += "".join(f" After that, {r}." for r in res[1:-1])
+            return _end(s + f" Save {res[-1]} for last")
+        if k == 1 and n == 2:
+            return _cap(_end(f"do {res[0]} before {res[1]}, please"))
+        s = f"Start off at {res[0]}." + "".join(f" From there, make your way to {r}." for r in res[1:-1])
+        return _end(s + f" Finish up at {res[-1]}") + " Order matters."
+    s = f"Could you drop by {res[0]}" + "".join(f"? And while you're at it, {r}" for r in res[1:]) + "?"
+    return _end(s) + _pick(rng, (" No particular order.", " Whatever order you like.", " Order's up to you."))
 
 
-def _tidy(rng, res: list[str], order: str) -> str:
+def _landlord(rng, res: list[str], order: str) -> str:
+    lines = [_cap(r) for r in res]
+    if len(lines) == 1:
+        return _end(f"Check: {lines[0]}")
+    sep = _pick(rng, ("\n", " / ", ". "))
+    if order == "strict":
+        return sep.join(f"{i + 1}. {x}" if sep != ". " else f"({i + 1}) {x}" for i, x in enumerate(lines)) + \
+            _pick(rng, (". Order as listed.", ". In the order given."))
+    return sep.join(lines) + _pick(rng, (". Any order.", ". Order not important."))
+
+
+def _engineer(rng, res: list[str], order: str) -> str:
     n = len(res)
     if n == 1:
-        return _finish(_pick(rng, (f"Task: {res[0]}", f"One stop: {res[0]}", f"Please {_pick(rng, _VERBS)} {res[0]}")))
+        return _pick(rng, (f"goto: {res[0]}", f"target = {res[0]}", f"nav to {res[0]}"))
     if order == "strict":
         k = int(rng.integers(3))
         if k == 0:
-            return _finish("In this order: " + "; ".join(f"{i + 1}) {r}" for i, r in enumerate(res)))
+            return " -> ".join(res) + " (order: strict)"
         if k == 1:
-            return _finish("; ".join(f"Step {i + 1}: {r}" for i, r in enumerate(res)))
-        return _finish(f"Route, in order: {res[0]}; " + "; ".join(f"then {r}" for r in res[1:]))
-    head = _pick(rng, ("To visit (any order): ", "Stops, order not important: ", "Please cover these, in any order: ",
-                       "Checklist (order up to you): "))
-    return _finish(head + "; ".join(res))
+            return " ".join(f"{i + 1}/ {r}" for i, r in enumerate(res)) + " - in sequence"
+        return "seq: " + "; ".join(res)
+    return _pick(rng, ("targets (any order): ", "order: any | ", "unordered: ")) + "; ".join(res)
+
+
+def _grandparent(rng, res: list[str], order: str) -> str:
+    n = len(res)
+    if n == 1:
+        return _cap(_end(f"now dear I want you to go over to {res[0]}"))
+    if order == "strict":
+        sep = ", " if any(" and " in r or "," in r for r in res) else " "
+        s = f"now dear first of all go to {res[0]}" + "".join(f"{sep}and then after that {r}" for r in res[1:-1])
+        s += f"{sep}and then last of all {res[-1]}"
+        return _cap(_end(s))
+    s = f"now dear I'd like you to see to {_and(res)}" if all("," not in r for r in res) else \
+        f"now dear I'd like you to see to {res[0]}" + "".join(f", and also {r}" for r in res[1:])
+    return _cap(_end(s)) + _pick(rng, (" It doesn't matter which you do first.", " Whichever order you please."))
 
 
 def render_instruction_heldout(rng: np.random.Generator, res: list[str], order: str) -> str:
-    """A whole instruction over rendered goals, typed into the app by one of four household members (a rushed
-    parent, a teenager, an older relative, a tidy list-maker). Strict texts spell the visiting order out
-    ('first ... then ...', 'A → B → C. In that order.', 'B. but before that A', numbered steps, 'and to
-    finish, ...'); free ones say it is open ('any order', 'idc what order', 'I'm not fussy about the order').
-    """
+    """A whole instruction over rendered goals, left by one of four housemates (a chatty flatmate, a landlord
+    taking inventory, an engineer, a grandparent dictating). Strict texts spell the visiting order out
+    ('Before anything else ... Save X for last', numbered lines, 'A -> B (order: strict)', 'first of all ...
+    and then last of all'); free ones say it is open ('while you're at it', 'Any order.', 'order: any')."""
     res = [r.strip().rstrip(",") for r in res]
     who = int(rng.integers(4))
-    return (_parent, _teen, _wordy, _tidy)[who](rng, res, order)
+    return (_flatmate, _landlord, _engineer, _grandparent)[who](rng, res, order)
