@@ -135,7 +135,8 @@ _PAIR_XY = (
 )
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
 _LOC2 = re.compile(
-    r"(?:\b(?:located|positioned|situated|placed)\s+)?\b(?:at|coordinates?|coords?|position|point|location)\s+"
+    r"(?:\b(?:located|positioned|situated|placed)\s+)?(?:\b(?:at|coordinates?|coords?|position|point|location)\s+"
+    rf"|\b(?:around|near|roughly|about|approximately)\s+(?={NUM}\s*/))"
     r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location)\s+)?"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
     rf"(?P<x3>{NUM}){_NUM_END}{_METRES}\s*[,/|]\s*(?P<y3>{NUM}){_NUM_END}{_METRES}"
@@ -270,7 +271,7 @@ _FREE = re.compile(
 )
 # Order phrases that only confirm the strict default: "in exactly this order", "in the order given", "one by one".
 _STRICT = re.compile(
-    r"\b(?:in\s+)?(?:(?:exactly|precisely|strictly|just)\s+)?(?:this|that|the\s+(?:same|given|listed|stated|following"
+    r"\b(?:(?:strictly|exactly|precisely)\s+)?(?:in\s+)?(?:(?:exactly|precisely|strictly|just)\s+)?(?:this|that|the\s+(?:same|given|listed|stated|following"
     r"|above|written))\s+(?:(?:exact|very|same|precise)\s+)?(?:order|sequence)\b"
     r"(?:\s+(?:as\s+)?(?:given|listed|written|stated|above|below))?"
     r"|\bin\s+the\s+(?:exact\s+)?(?:order|sequence)\s+(?:given|listed|written|stated|shown|above|below|i\s+(?:gave|listed))"
@@ -404,7 +405,42 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # Greetings and closing courtesies: "hi,", "ok so", "quick one:", ", thanks", "cheers", "pls".
     (r"^(?:(?:hi|hey|hello|ok|okay|right|so|alright|well|um+|uh+|er+|quick\s+one|robot)(?:\s+(?:there|robot|buddy|so|then)"
      r")?\s*[,:!.]?\s+)+", ""),
-    (r"(?:[,;-]\s*|\s+)\b(?:thanks|thank\s+you|thx|ta|cheers|pls|plz|please)(?:\s+(?:a\s+lot|so\s+much|very\s+much|again"
+    # Chat shorthand and words typed without apostrophes: "rn", "plz", "u", "idc", "doesnt", "im".
+    (r"\b(?:rn|asap|lol|thx|ty|tysm)\b", " "),
+    (r"\b(?:plz|pls|plez|pleaseee*)\b", "please"),
+    (r"\b(?:u|ya)\b(?!-)", "you"),
+    (r"\bur\b", "your"),
+    (r"\bidc\b", "i don't care"),
+    (r"\bidm\b", "i don't mind"),
+    (r"\b(?P<w>does|do|is|are|was|were|has|have|can|won|wouldn|shouldn|didn)nt\b",
+     lambda m: {"won": "won't", "can": "can't"}.get(m.group("w"), m.group("w") + "n't")),
+    (r"\bim\b", "i'm"),
+    (r"^(?:yo|oi|hey+)\b,?\s*", ""),
+    # Asking as a favour: "would you be a dear and", "be an angel and", "be so kind as to".
+    (r"\bbe\s+(?:a\s+(?:dear|love|darling|star|gem|sweetheart)|an\s+angel)\s+and\s+", " "),
+    # A state or a room in brackets straight after a noun is that noun's: "the freezer (open)" is the open
+    # freezer, even as an anchor ("the bin by the freezer (open)"); "the kettle (kitchen)" is in the kitchen.
+    (rf"\bthe\s+(?P<np>(?:(?!(?:the|a|an|and|of|with|to|by|in|on|near|next|beside|that|which|at|from)\b)[\w'-]+\s+){{0,3}}?"
+     rf"[\w'-]+)\s*\(\s*(?P<st>{_alt(L.STATE_PHRASES)})\s*\)",
+     lambda m: "the " + re.sub(r"^((?:[\w-]+\s+)*?[\w-]+'s\s+)?", lambda p: (p.group(0) or "") + m.group("st") + " ",
+                               m.group("np"), count=1)),
+    (rf"(?<=[a-z])\s*\(\s*(?:in\s+the\s+)?(?P<r>(?:[a-z]+\s+)?(?:{'|'.join(sorted(L.ROOM_WORDS))}|[a-z]*room))\s*\)",
+     r" in the \g<r>"),
+    # Hurry: "quick please", "asap", "as soon as you can", "when you get a chance".
+    (r"(?:^|(?<=[.!?;,]\s)|(?<=[.!?;,]))\s*(?:quick(?:ly)?|fast|soon|now)(?:\s+(?:please|if\s+you\s+can))?\s*(?=[.!?]|$)", " "),
+    (r",?\s*\b(?:as\s+soon\s+as\s+(?:you\s+can|possible)|when\s+you\s+(?:get\s+a\s+(?:chance|moment|sec)|can))\b", " "),
+    # "at -23 degrees, give or take": the tolerance goes with the number.
+    (r",\s*(?=(?:give\s+or\s+take|or\s+so|or\s+thereabouts)\b)", " "),
+    # A score on a reading: "scoring more than 0.6 on ndvi" is an ndvi above 0.6; "the worst ndvi score" the lowest.
+    (rf"\b(?:scoring|scores?|rated|rating|measuring)\s+(?P<c>(?:[a-z]+\s+){{0,3}}?)(?P<n>{NUM})\s+(?:on|for|in)\s+(?:the\s+)?"
+     rf"(?P<r>{READ_ALT})\b", r"with \g<r> \g<c>\g<n>"),
+    (rf"\b(?P<q>best|worst|top|bottom)\s+(?P<r>{READ_ALT})(?:\s+(?:score|reading|value|level))?\b",
+     lambda m: ("highest " if m.group("q") in ("best", "top") else "lowest ") + m.group("r")),
+    # Lists said with "also": "the kettle. also the lamp", "the kettle, and also the lamp".
+    (r"(?:(?<=[.;,!?]\s)|(?<=^)|\band\s+)also\s+(?=(?:the|a|an|my|your|our)\b)", "and "),
+    # A reflexive in an anchor's clause adds nothing: "the shelf that is itself near the lectern".
+    (r"\b(?P<v>is|are|'s|sits|stands)\s+(?:itself|themselves)\b", r"\g<v>"),
+    (r"(?:[,;-]\s*|\s+)\b(?:(?:many\s+)?thanks|thank\s+you|thx|ta|cheers|pls|plz|please)(?:\s+(?:a\s+lot|so\s+much|very\s+much|again"
      r"|robot|buddy))?\s*(?=[.!?]|$)", ""),
     (r"\b(?:um+|uh+|er+|erm+)\b,?", " "),
     (rf"\b(?:minus|negative)\s+(?P<nw>{_NW_SEQ})\b", lambda m: "-" + _digits(m.group("nw"))),
@@ -426,7 +462,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # Steps said without punctuation: "step one go to the sofa step two ...".
     (r"\bstep\s+(?:\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten)\b\s*[:.)-]?\s*", "; "),
     (r"(?:(?<=^)|(?<=[\s:;,]))(?:\(?\d{1,2}\)|\([a-h]\))(?=\s*[a-z])", _list_marker),
-    (r"(?:(?<=^)|(?<=[:;!?])|(?<=[:;.!?]\s))\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ... 2. find ..."
+    (r"(?:(?<=^)|(?<=[:;!?])|(?<=[:;.!?]\s))(?<![xy]:\s)(?<![xy]:)\d{1,2}\.(?=\s+[a-z])", "; "),  # "in this order: 1. go to ... 2. find ..."
     # Remarks that ask for nothing: "Any irregularities should be noted in the log.", "No further action is
     # required.", purpose clauses ("so that a check can be carried out", "(for the maintenance log)").
     (r"(?:^|(?<=[.!?;]\s)|(?<=[.!?;]))\s*(?:any\s+(?:irregularities|issues|problems|findings)|no\s+further\s+action"
@@ -1349,6 +1385,8 @@ def parse_instruction(text: str) -> TaskChain:
         order = "free"
         s = _FREE.sub(" ", s)
     s = _STRICT.sub(" ", s)
+    s, free = _order_remarks(s)
+    order = "free" if free else order
 
     parts = _SPLIT.split(s)
     # re.split with one named group yields [seg, connector, seg, connector, ...]
@@ -1455,6 +1493,40 @@ def parse_instruction(text: str) -> TaskChain:
         dependencies=derive_dependencies(subgoals_t, order),
         parser="rules",
     )
+
+
+# A remark about the order that the phrase lists above do not know ("order not important", "the order makes no
+# difference to me", "i don't care which one first"): a short clause about the order or about which goes first,
+# naming no object, read by its cue words. Indifference wins over emphasis ("order matters" is strict, "order
+# doesn't matter" is free).
+_ORDER_CLAUSE = re.compile(r"[^.;:!?()\[\],⟪⟫]*\b(?:order|sequence|first)\b[^.;:!?()\[\],⟪⟫]*")
+_FREE_CUES = frozenset("any anything whatever whichever no not never matter difference care mind fussy fussed bothered "
+                       "flexible free choose pick decide optional random irrelevant unimportant up yours".split())
+_STRICT_CUES = frozenset("this that given listed as keep stick follow strict strictly exact exactly same written shown above "
+                         "below important matters counts specified numbered sequence order".split())
+_FIRST_CUES = frozenset("which what either whichever".split())
+
+
+def _order_remarks(s: str) -> tuple[str, bool]:
+    """(s without its remarks about the order, whether one says the order is free)."""
+    free = False
+
+    def read(m: re.Match) -> str:
+        nonlocal free
+        words = m.group(0).replace("n't", " not").split()
+        if not words or len(words) > 9 or ("first" in words and not any(w in ("order", "sequence") for w in words)
+                                           and not _FIRST_CUES & set(words)):
+            return m.group(0)
+        rest = [w for k, w in enumerate(words) if not (w in ("the", "a", "an") and k + 1 < len(words)
+                                                       and words[k + 1] in ("order", "sequence"))]
+        if any(w in ("the", "a", "an", "my", "your", "our") for w in rest):
+            return m.group(0)  # "first the kettle", "visit the kettle in any order": goals, not remarks
+        if _FREE_CUES & set(words):
+            free = True
+            return " "
+        return " " if _STRICT_CUES & set(words) else m.group(0)
+
+    return _ORDER_CLAUSE.sub(read, s), free
 
 
 def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
