@@ -4,7 +4,8 @@
 
 RUN is a `ragnav eval --out` folder (run from the folder the eval ran in: its summary records the scene
 set and episodes file as given). For every goal that is not `found`, the first cause that applies:
-- `unparsed`: the instruction did not parse;
+- `unparsed`: the instruction did not parse, or fewer subgoals were read than it has goals (the k-th true goal
+  is compared with the k-th subgoal read, as retrieval is scored; the loop itself runs every subgoal read);
 - `not_in_memory`: the memory never recorded the target object (no caption names it);
 - `check_rejects_target`: the reflection's check fails on the target itself (the failing parts named:
   name, attributes, relations, location, sensors, room);
@@ -89,8 +90,8 @@ def causes(run: Path, method: str) -> list[dict]:
             k = ids.index(goal)
             obj = view.scene.objects[k]
             detail = ""
-            if not sgs:
-                cause = "unparsed"
+            if not sgs or g >= len(sgs):  # no instruction read, or fewer subgoals read than goals
+                cause, detail = "unparsed", "" if not sgs else "no subgoal read in its place"
             elif k not in view.aliases:
                 cause = "not_in_memory"
             elif not verifier.verdicts(view, sgs[g], ps)[k]:
@@ -106,7 +107,7 @@ def causes(run: Path, method: str) -> list[dict]:
                 cause, detail = "executor", status.split(":")[-1]
             out.append({"episode": ep.id, "modality": ep.modality, "goal": g, "target": goal, "status": status,
                         "cause": cause, "detail": detail,
-                        "subgoal": sgs[g].text if sgs else ep.instruction})
+                        "subgoal": sgs[g].text if sgs and g < len(sgs) else ep.instruction})
     return out
 
 

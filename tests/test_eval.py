@@ -89,16 +89,51 @@ def test_absent_target_is_a_recorded_failure(setup, apartment):
 
 def test_a_remark_read_as_a_goal_is_dropped_before_it_costs_the_episode(setup, apartment):
     """The parser reads 'no rush at all on this one' as a first goal; grounding it in the memory's names
-    drops it (evaluation/grounding.py), so the sofa is goal 0 again. Without grounding the remark takes the
-    sofa's place and the episode fails."""
+    drops it (evaluation/grounding.py). Without grounding the loop runs the remark as a subgoal of its own:
+    the robot drives to candidates that no check confirms before it turns to the sofa (more steps, here
+    about 23 m more travel)."""
     cfg, bank, streams, emb, ex = setup
     ep = Episode(id="remark", scene=apartment.name, instruction="No rush at all on this one: the sofa, then the fridge.",
                  modality="text", goals=("sofa_1", "fridge_1"), order="strict")
     rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "ragnav", executor=ex)
-    assert rows[0]["success"] and rows[0]["ungrounded"] == ["no rush"]
+    assert rows[0]["success"] and rows[0]["ungrounded"] == ["no rush"] and len(rows[0]["subgoal_status"]) == 2
     off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, ground=False))
-    rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, off, "ragnav", executor=ex)
-    assert not rows[0]["success"] and rows[0]["ungrounded"] == []
+    rows2, _ = evaluate_navigation(bank, [apartment], [ep], emb, off, "ragnav", executor=ex)
+    r = rows2[0]
+    assert r["ungrounded"] == [] and len(r["subgoal_status"]) == 3 and r["subgoal_status"][0] != "found"
+    assert not r["success"] or r["steps"] > rows[0]["steps"]
+
+
+def test_declarations_count_for_the_true_goal_they_are_made_at(setup, apartment):
+    """The loop runs the subgoals it read, in the order it read; a declaration counts for whichever true goal
+    it was made at. The instruction names the fridge first, the episode lists the bed first: in free order
+    both are found (pairing subgoal k with true goal k would call the fridge a wrong declaration); in strict
+    order the robot keeps to the instruction and the episode fails on order, not on a wrong object."""
+    cfg, bank, streams, emb, ex = setup
+    free = Episode(id="free", scene=apartment.name, instruction="Go to the fridge and the bed, in any order.",
+                   modality="text", goals=("bed_1", "fridge_1"), order="free")
+    strict = Episode(id="strict", scene=apartment.name, instruction="Go to the fridge, then the bed.",
+                     modality="text", goals=("bed_1", "fridge_1"), order="strict")
+    rows, _ = evaluate_navigation(bank, [apartment], [free, strict], emb, cfg, "ragnav", executor=ex)
+    r = {x["episode"]: x for x in rows}
+    assert r["free"]["success"] and r["free"]["goal_status"] == ["found", "found"]
+    assert sorted(d["truth"] for d in r["free"]["declarations"]) == [0, 1]
+    assert [d["truth"] for d in r["strict"]["declarations"]] == [1, 0] and r["strict"]["wrong_declarations"] == 0
+    assert not r["strict"]["success"] and r["strict"]["reason"] == "order"
+
+
+def test_the_loop_reads_the_order_from_the_instruction_not_the_episode(setup, apartment):
+    """One episode whose file records the order as free, then as strict: the robot drives the same way in
+    both (it reads the instruction, never the answer; the perception noise is drawn per episode id, so the id
+    stays)."""
+    cfg, bank, streams, emb, ex = setup
+    text = "Visit the fridge, the bed and the sofa - in whatever order is quickest."
+    rows = [evaluate_navigation(bank, [apartment], [Episode(id="same", scene=apartment.name, instruction=text,
+                                                             modality="text", goals=("fridge_1", "bed_1", "sofa_1"),
+                                                             order=o)], emb, cfg, "ragnav", executor=ex)[0][0]
+            for o in ("free", "strict")]
+    assert rows[0]["declarations"] == rows[1]["declarations"] and rows[0]["declarations"]
+    assert rows[0]["travel_distance_m"] == rows[1]["travel_distance_m"]
 
 
 def test_plan_order_matches_brute_force():
@@ -196,7 +231,7 @@ def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartmen
     sg = parse_instruction(ep.instruction).subgoals
     c = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, retries=1))
     loop = Loop(method_spec("ragnav"), bank, [apartment], c, ex, streams)
-    st = EpisodeState(0, ep, 0, 0, sg, [[3, 5, 7]], [[None] * 3], [0], [0], [0], 0, ["pending"])
+    st = EpisodeState(0, ep, 0, 0, sg, [[3, 5, 7]], [[None] * 3], [0], [0], [0], 0, ["pending"], True, [False])
     assert loop.current(st, 0) == 3
     loop.reject(st, 0, "not_confirmed")
     assert loop.current(st, 0) == 5 and st.status == ["pending"]
@@ -332,7 +367,7 @@ def test_approach_route_goes_round_a_small_obstacle_without_a_map_detour(setup, 
     cfg, bank, streams, emb, ex = setup
     loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
     ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
-    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"])
+    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"], True, [False])
     obs, need = loop.obstacles[0], loop._need()
     tried = 0
     for o in apartment.objects:
@@ -447,7 +482,7 @@ def test_approach_stops_where_the_robot_can_get(grid_graphs, setup, apartment):
     loop, lo, clear, graphs = grid_graphs
     cfg = setup[0]
     ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
-    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"])
+    st = EpisodeState(0, ep, 0, 0, None, [[]], [[]], [0], [0], [], 0, ["pending"], True, [False])
     g = graphs["tight"]
     comp = {c: k for k, cc in enumerate(nx.connected_components(g)) for c in cc}
     cell = lambda p: tuple(int(round(x)) for x in (np.asarray(p) - lo) / GRID_M)  # noqa: E731

@@ -11,10 +11,13 @@ Phases (host Python only between them; every simulation step runs inside a jitte
    pose; the verifier's verdict table: is a visible object the subgoal's target?). Confirmed: drive up to it (an approach
    leg) and declare FOUND. Not confirmed, or the approach is blocked: reject the candidate, take the
    goal's next candidate and re-plan the remaining order, at most `eval.retries` times per goal.
-Judging (MultiON-style, on the simulated trajectory only): a FOUND for goal k counts when the robot's
-simulated position is within `eval.found_radius` of goal k's box; passing near a goal without
-declaring does not count; a FOUND elsewhere is a recorded wrong declaration. An episode succeeds when
-every goal was found (strict episodes: in the instruction's order) within `eval.max_steps`.
+The loop runs the subgoals it read, as many as it read and in the order type it read (strict: as written;
+free: its own plan); it never sees the episode file's goals or order (only the Oracle does).
+Judging (MultiON-style, on the simulated trajectory only): a FOUND counts for the true goal within
+`eval.found_radius` of the robot's simulated position (the nearest not found yet), whichever subgoal it was
+made for; passing near a goal without declaring does not count; a FOUND at no true goal is a recorded
+wrong declaration and fails the episode. An episode succeeds when every true goal was found (strict
+episodes: in the episode's order) within `eval.max_steps`.
 
 Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
 also plans and drives straight lines (no map); the retrieval baselines (naive_rag, graphrag, lightrag)
@@ -52,7 +55,7 @@ from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.retrieval import kernels as K
 from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
-from ragnav_jax.retrieval.evaluate import goal_items, prepare_batch, scored_batch
+from ragnav_jax.retrieval.evaluate import goal_items, parsed_order, prepare_batch, scored_batch
 from ragnav_jax.retrieval.index import node_slots
 from ragnav_jax.retrieval.params import ablation_params, params_from_config
 from ragnav_jax.retrieval.score import score_subgoal
@@ -257,7 +260,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     names = list(bank.names)
     by_name = {s.name: s for s in scenes}
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
-    items = goal_items(episodes, ground)
+    items = goal_items(episodes, ground, every_subgoal=True)
     per_ep: dict[str, list] = defaultdict(list)
     subgoals: dict[str, object] = {}
     for ep, _kk, _goal, sg in items:
@@ -271,7 +274,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
     if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
-        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground)
+        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True)
         timing["embed_ms"] = bmeta.embed_ms
         rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
         name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
@@ -350,6 +353,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
         timing["retrieval_ms_single"] = timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
     elif spec.retrieval == "oracle":
         for ep, kk, goal, _sg in items:
+            if goal is None:
+                continue
             b = names.index(ep.scene)
             gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
             node = _oracle_node(bank, b, gidx)
@@ -418,6 +423,8 @@ class EpisodeState:
     remaining: list  # goals still to visit, in planned order
     node: int  # graph node the robot is at (or nearest to)
     status: list  # per goal: pending | found | wrong | failed:<reason>
+    strict: bool  # visit the goals in the order written (the parser's reading; the Oracle's: the truth)
+    found: list  # per true goal of the episode: a correct declaration was made at it
     declarations: list = dataclasses.field(default_factory=list)
     steps: int = 0
     look_steps: int = 0
@@ -612,7 +619,7 @@ class Loop:
 
     def replan(self, st: EpisodeState) -> None:
         """Re-solves the order of the remaining goals from the robot's node with their current candidates."""
-        if st.ep.order == "strict" or not self.spec.optimal_order:
+        if st.strict or not self.spec.optimal_order:
             st.remaining = sorted(st.remaining)  # the instruction's order
             return
         live = [g for g in st.remaining if self.current(st, g) is not None]
@@ -666,9 +673,18 @@ class Loop:
         return min(left, key=lambda n: cost[st.node, n]) if left else None
 
     def goal_object(self, st: EpisodeState, g: int):
+        """The scene object of the episode's true goal g (the Oracle's goals are the true ones)."""
         sc = self.scenes[st.ep.scene]
         oid = st.ep.goals[g]
         return next((o for o in sc.objects if o.id == oid), None)
+
+    def true_goal_at(self, st: EpisodeState, pose: np.ndarray) -> int | None:
+        """The nearest true goal not found yet within eval.found_radius of the pose, or None: what a
+        declaration there counts for, whichever subgoal the robot was after (the loop runs the subgoals it
+        read, which need not be the true ones one for one)."""
+        near = [(box_distance(o, pose[:2]), j) for j in range(len(st.ep.goals)) if not st.found[j]
+                and (o := self.goal_object(st, j)) is not None and box_distance(o, pose[:2]) <= self.cfg.eval.found_radius]
+        return min(near)[1] if near else None
 
     # -- deciding the next leg
     def next_leg(self, st: EpisodeState, pose: np.ndarray) -> tuple | None:
@@ -894,11 +910,12 @@ class Loop:
             obj = sc.objects[payload]
             st.leg = None
             if box_distance(obj, pose[:2]) <= self.cfg.eval.found_radius:
-                gobj = self.goal_object(st, g)
-                correct = gobj is not None and box_distance(gobj, pose[:2]) <= self.cfg.eval.found_radius
-                st.declarations.append({"goal": g, "object": obj.id, "correct": bool(correct),
+                j = self.true_goal_at(st, pose)
+                if j is not None:
+                    st.found[j] = True
+                st.declarations.append({"goal": g, "truth": j, "object": obj.id, "correct": j is not None,
                                         "step": st.steps + st.look_steps, "xy": [round(float(x), 3) for x in pose[:2]]})
-                st.status[g] = "found" if correct else "wrong"
+                st.status[g] = "found" if j is not None else "wrong"
                 st.remaining.remove(g)
             else:
                 st.skip.add((g, payload))
@@ -947,11 +964,14 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     for e, ep in enumerate(episodes):
         b = names.index(ep.scene)
         sc = loop.scenes[ep.scene]
-        G = len(ep.goals)
+        # the goals run: the subgoals read from the instruction (the Oracle, and an unread instruction: the true ones)
+        sgs = cands.subgoals[e]
+        G = len(ep.goals) if spec.retrieval == "oracle" or sgs is None else len(sgs)
+        strict = ep.order == "strict" if spec.retrieval == "oracle" or sgs is None else parsed_order(ep.instruction) == "strict"
         start = loop.nearest(b, sc.start.position[:2])
-        ests = (cands.est[e] if cands.est else []) + [[]] * (G - len(cands.est[e] if cands.est else []))
-        st = EpisodeState(e, ep, b, ex.names.index(ep.scene), cands.subgoals[e], cands.nodes[e] + [[]] * (G - len(cands.nodes[e])),
-                          ests, [0] * G, [0] * G, list(range(G)), start, ["pending"] * G)
+        ests = ((cands.est[e] if cands.est else []) + [[]] * G)[:G]
+        st = EpisodeState(e, ep, b, ex.names.index(ep.scene), sgs, (cands.nodes[e] + [[]] * G)[:G], ests, [0] * G,
+                          [0] * G, list(range(G)), start, ["pending"] * G, strict, [False] * len(ep.goals))
         if spec.retrieval != "etpnav":
             loop.replan(st)
         st.planned = list(st.remaining)

@@ -1,8 +1,9 @@
 """Per-episode navigation metrics and their summary.
 
 Definitions (per episode; the summary averages over episodes, and over each modality in `by_modality`):
-- success: every goal declared FOUND within `eval.found_radius` of its box on the simulated trajectory,
-  in the instruction's order for strict episodes, within the step budget.
+- success: every true goal declared FOUND within `eval.found_radius` of its box on the simulated
+  trajectory, in the episode's order for strict episodes, within the step budget, and no FOUND declared at
+  anything else (the loop runs the subgoals it read: a declaration counts for the true goal it was made at).
 - progress (MultiON): share of goals found; strict episodes count only the in-order prefix.
 - travel_distance_m: length of the simulated trajectory (MJX robot positions per control step).
 - planned_rule1_m / planned_rule2_m: the first plan's route over the map, Rule 1 (edge distances) and
@@ -66,11 +67,16 @@ def _oracle_length(loop, st, oracle_nodes: list) -> float:
 
 
 def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
+    """One episode's outcome against its true goals. The loop ran the subgoals it read; a declaration counts
+    for the true goal it was made at (`truth`), and one made at no true goal is a wrong declaration, which
+    fails the episode. `goal_status` is per true goal (found, else what became of the subgoal read in its
+    place, or `missed`); `subgoal_status` per subgoal run."""
     ep = st.ep
     G = len(ep.goals)
-    found = [s == "found" for s in st.status]
-    seq = [d["goal"] for d in st.declarations if d["correct"]]
+    found = list(st.found)
+    seq = [d["truth"] for d in st.declarations if d["correct"]]
     in_order = seq == sorted(seq)
+    wrong = any(not d["correct"] for d in st.declarations)
     strict = ep.order == "strict"
     if strict:
         prefix = 0
@@ -83,7 +89,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
     else:
         progress = sum(found) / G
     budget_ok = st.steps + st.look_steps <= cfg.eval.max_steps
-    success = all(found) and (in_order or not strict) and budget_ok
+    success = all(found) and (in_order or not strict) and budget_ok and not wrong
     L = st.length
     Ls = _oracle_length(loop, st, oracle_nodes)
     ratio = 1.0 if Ls <= 0 and L <= 0 else Ls / max(L, Ls, 1e-9)
@@ -103,7 +109,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
     r1, r2 = _route(loop, st.b, start, first) if loop.spec.retrieval != "etpnav" else (float("nan"), float("nan"))
     fails = [s.split(":", 1)[1] for s in st.status if s.startswith("failed")]
     reason = "success" if success else (
-        "wrong_declaration" if any(s == "wrong" for s in st.status) else
+        "wrong_declaration" if wrong else
         (fails[0] if fails else ("order" if not in_order else st.reason or "incomplete")))
     return {
         "episode": ep.id, "scene": ep.scene, "modality": ep.modality, "order": ep.order, "method": method,
@@ -113,7 +119,9 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
         "planned_rule1_m": None if math.isnan(r1) else round(r1, 3),
         "planned_rule2_m": None if math.isnan(r2) else round(r2, 3),
         "sim_time_s": round((st.steps + st.look_steps) * loop.ex.control_dt, 2), "steps": st.steps + st.look_steps,
-        "retrieval_top1": top1, "goal_status": st.status, "declarations": st.declarations,
+        "retrieval_top1": top1, "declarations": st.declarations, "subgoal_status": list(st.status),
+        "goal_status": ["found" if found[j] else (st.status[j] if j < len(st.status) and st.status[j] != "found"
+                                                   else "missed") for j in range(G)],
         "wrong_declarations": sum(not d["correct"] for d in st.declarations),
         "rejected_candidates": int(sum(st.rejected)), "max_penetration_m": round(st.penetration, 4),
         "reason": reason, "ungrounded": list(cands.ungrounded.get(ep.id, ())),

@@ -28,7 +28,7 @@ from flax import struct
 
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.parser import parse_instruction
-from ragnav_jax.language.types import ParseError, Subgoal
+from ragnav_jax.language.types import ParseError, Subgoal, TaskChain
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
 from ragnav_jax.retrieval.index import IndexMeta, build_bank_index, node_slots
@@ -107,23 +107,29 @@ def correct_counts(batch: RetrievalBatch, params: RetrievalParams) -> jax.Array:
     return jnp.sum(batch.group & hit[..., None], axis=(0, 1)).astype(jnp.int32)
 
 
-def goal_items(episodes: Sequence[Episode], ground: Callable | None = None) -> list[tuple]:
-    """(episode, goal k, goal object id, Subgoal or None) for every goal of every episode, in order.
-    ground: (episode, subgoals) -> subgoals, applied to each parse (evaluation/grounding.py)."""
+def goal_items(episodes: Sequence[Episode], ground: Callable | None = None, every_subgoal: bool = False) -> list[tuple]:
+    """(episode, goal k, goal object id, Subgoal or None) for every goal of every episode, in order: the k-th
+    parsed subgoal beside the k-th true goal, as retrieval is scored. ground: (episode, subgoals) -> subgoals,
+    applied to each parse (evaluation/grounding.py). every_subgoal: also the parsed subgoals past the last true
+    goal (goal id None), as the closed loop runs every subgoal it read."""
     items = []
     for ep, sgs in zip(episodes, parse_all(episodes, ground)):
-        for k, goal in enumerate(ep.goals):
-            items.append((ep, k, goal, sgs[k] if sgs is not None and k < len(sgs) else None))
+        n = max(len(ep.goals), len(sgs)) if every_subgoal and sgs is not None else len(ep.goals)
+        for k in range(n):
+            items.append((ep, k, ep.goals[k] if k < len(ep.goals) else None,
+                          sgs[k] if sgs is not None and k < len(sgs) else None))
     return items
 
 
 def prepare_batch(
     bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder,
     index_and_metas: tuple | None = None, modalities: Sequence[str] | None = None, ground: Callable | None = None,
+    every_subgoal: bool = False,
 ) -> tuple[RetrievalBatch | None, BatchMeta]:
     """Parses, embeds and groups the episodes' subgoals by scene (host side, once per episodes file).
 
-    index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. ground: as in goal_items.
+    index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. ground, every_subgoal: as in
+    goal_items.
     Returns (None, meta) when no instruction yields a subgoal.
     """
     names = list(bank.names)
@@ -133,11 +139,11 @@ def prepare_batch(
 
         raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
     index, imetas = index_and_metas or build_bank_index(bank, scenes, embedder)
-    items = goal_items(episodes, ground)
+    items = goal_items(episodes, ground, every_subgoal)
     mods = tuple(modalities) if modalities is not None else tuple(sorted({ep.modality for ep in episodes}))
     totals = np.zeros(len(mods), np.int64)
     for it in items:
-        totals[mods.index(it[0].modality)] += 1
+        totals[mods.index(it[0].modality)] += it[2] is not None  # true goals only
     live = [(i, it) for i, it in enumerate(items) if it[3] is not None]
     slots: list = [None] * len(items)
     if not live:
@@ -170,11 +176,22 @@ def prepare_batch(
 
 
 @functools.lru_cache(maxsize=1 << 16)
-def _subgoals(instruction: str) -> tuple[Subgoal, ...] | None:
+def _chain(instruction: str) -> TaskChain | None:
     try:
-        return parse_instruction(instruction).subgoals
+        return parse_instruction(instruction)
     except ParseError:
         return None
+
+
+def _subgoals(instruction: str) -> tuple[Subgoal, ...] | None:
+    chain = _chain(instruction)
+    return None if chain is None else chain.subgoals
+
+
+def parsed_order(instruction: str) -> str | None:
+    """The order the parser reads in an instruction ('strict' | 'free'), None where it cannot read it."""
+    chain = _chain(instruction)
+    return None if chain is None else chain.order
 
 
 def parse_all(episodes: Sequence[Episode], ground: Callable | None = None) -> list[tuple[Subgoal, ...] | None]:
