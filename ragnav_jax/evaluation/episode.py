@@ -13,10 +13,10 @@ Phases (host Python only between them; every simulation step runs inside a jitte
    goal's next candidate and re-plan the remaining order, at most `eval.retries` times per goal.
 The loop runs the subgoals it read, as many as it read and in the order type it read (strict: as written;
 free: its own plan); it never sees the episode file's goals or order (only the Oracle does).
-Judging (MultiON-style, on the simulated trajectory only): a FOUND counts for the true goal within
-`eval.found_radius` of the robot's simulated position (the nearest not found yet), whichever subgoal it was
-made for; passing near a goal without declaring does not count; a FOUND at no true goal is a recorded
-wrong declaration and fails the episode. An episode succeeds when every true goal was found (strict
+Judging (MultiON-style, on the simulated trajectory only): a FOUND counts for the true goal the robot
+approached when it is one not found yet, else for the nearest such goal within `eval.found_radius` of the
+robot's simulated position, whichever subgoal it was made for; passing near a goal without declaring does
+not count; a FOUND at no true goal is a recorded wrong declaration and fails the episode. An episode succeeds when every true goal was found (strict
 episodes: in the episode's order) within `eval.max_steps`.
 
 Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
@@ -678,12 +678,18 @@ class Loop:
         oid = st.ep.goals[g]
         return next((o for o in sc.objects if o.id == oid), None)
 
-    def true_goal_at(self, st: EpisodeState, pose: np.ndarray) -> int | None:
-        """The nearest true goal not found yet within eval.found_radius of the pose, or None: what a
-        declaration there counts for, whichever subgoal the robot was after (the loop runs the subgoals it
-        read, which need not be the true ones one for one)."""
-        near = [(box_distance(o, pose[:2]), j) for j in range(len(st.ep.goals)) if not st.found[j]
-                and (o := self.goal_object(st, j)) is not None and box_distance(o, pose[:2]) <= self.cfg.eval.found_radius]
+    def true_goal_at(self, st: EpisodeState, obj, pose: np.ndarray) -> int | None:
+        """The true goal a FOUND for object `obj` at the pose counts for, or None, whichever subgoal the robot
+        was after (the loop runs the subgoals it read, which need not be the true ones one for one): `obj`
+        itself when it is a true goal not found yet, else the nearest such goal within eval.found_radius of
+        the pose."""
+        r = self.cfg.eval.found_radius
+        left = [j for j in range(len(st.ep.goals)) if not st.found[j]]
+        same = [j for j in left if st.ep.goals[j] == obj.id]
+        if same and box_distance(obj, pose[:2]) <= r:
+            return same[0]
+        near = [(box_distance(o, pose[:2]), j) for j in left
+                if (o := self.goal_object(st, j)) is not None and box_distance(o, pose[:2]) <= r]
         return min(near)[1] if near else None
 
     # -- deciding the next leg
@@ -910,7 +916,7 @@ class Loop:
             obj = sc.objects[payload]
             st.leg = None
             if box_distance(obj, pose[:2]) <= self.cfg.eval.found_radius:
-                j = self.true_goal_at(st, pose)
+                j = self.true_goal_at(st, obj, pose)
                 if j is not None:
                     st.found[j] = True
                 st.declarations.append({"goal": g, "truth": j, "object": obj.id, "correct": j is not None,
