@@ -136,6 +136,18 @@ def test_the_loop_reads_the_order_from_the_instruction_not_the_episode(setup, ap
     assert rows[0]["travel_distance_m"] == rows[1]["travel_distance_m"]
 
 
+def test_the_oracle_does_not_depend_on_the_parse(setup, apartment):
+    """The Oracle reads no instruction: an instruction the parser cannot read (or reads with fewer goals)
+    fails every other method's goals as `failed:parse`, never the Oracle's."""
+    cfg, bank, streams, emb, ex = setup
+    ep = Episode(id="unread", scene=apartment.name, instruction="Visit either the kettle or the toaster.",
+                 modality="text", goals=("fridge_1", "bed_1"), order="strict")
+    rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "oracle", executor=ex)
+    assert rows[0]["success"] and rows[0]["goal_status"] == ["found", "found"]
+    rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "ragnav", executor=ex)
+    assert rows[0]["goal_status"] == ["failed:parse", "failed:parse"] and not rows[0]["success"]
+
+
 def test_plan_order_matches_brute_force():
     rng = np.random.default_rng(0)
     pts = rng.uniform(0, 10, (6, 2))
