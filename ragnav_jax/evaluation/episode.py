@@ -16,8 +16,8 @@ free: its own plan); it never sees the episode file's goals or order (only the O
 Judging (MultiON-style, on the simulated trajectory only): a FOUND counts for the true goal the robot
 approached when it is one not found yet, else for the nearest such goal within `eval.found_radius` of the
 robot's simulated position, whichever subgoal it was made for; passing near a goal without declaring does
-not count; a FOUND at no true goal is a recorded wrong declaration and fails the episode. An episode succeeds when every true goal was found (strict
-episodes: in the episode's order) within `eval.max_steps`.
+not count; a FOUND at no true goal is a recorded wrong declaration and fails the episode. An episode
+succeeds when every true goal was found (strict episodes: in the episode's order) within `eval.max_steps`.
 
 Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
 also plans and drives straight lines (no map); the retrieval baselines (naive_rag, graphrag, lightrag)
