@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from test_phrasings_dev8 import REL_WORDS, _all_targets, _has, read_numbers, subgoals
+from test_phrasings_dev8 import REL_WORDS, _all_targets, _has, constraints, read_numbers, subgoals
 
 from ragnav_jax.config import EPISODE_SPLITS
 from ragnav_jax.language import phrasings_heldout as H
@@ -91,18 +91,6 @@ def read_reading(text: str) -> str:
     if "humid" in t or "damp" in t or "dri" in t or "%" in t or "percent" in t:
         return "humidity_pct"
     return "temperature_c"
-
-
-_VALUES = {"temperature_c": st.integers(-30, 400).map(float) | st.sampled_from([20.5, -2.5, 37.5]),
-           "ndvi": st.integers(1, 19).map(lambda k: round(k * 0.05, 2)),
-           "humidity_pct": st.integers(5, 95).map(float)}
-
-
-@st.composite
-def constraints(draw):
-    rd = draw(st.sampled_from(tuple(_VALUES)))
-    cmp = draw(st.sampled_from(("gt", "ge", "lt", "le", "approx", "max", "min")))
-    return SensorConstraint(rd, cmp) if cmp in ("max", "min") else SensorConstraint(rd, cmp, draw(_VALUES[rd]))
 
 
 @SETTINGS

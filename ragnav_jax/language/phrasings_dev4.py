@@ -34,6 +34,7 @@ import re
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.phrasings import number_words
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
@@ -47,22 +48,6 @@ _SHORT_STATES = frozenset(("open", "closed", "empty", "full", "locked", "unlocke
                            "unplugged"))
 # "the switched on amplifier" is fine for an anchor too (people type it without a hyphen).
 _PRE_STATES = STATES
-
-_ONES = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen sixteen "
-         "seventeen eighteen nineteen").split()
-_TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
-
-
-def number_words(n: int) -> str:
-    """0..99 in words ('fifty-five'); negatives with 'minus'."""
-    if n < 0:
-        return "minus " + number_words(-n)
-    if n < 20:
-        return _ONES[n]
-    if n < 100:
-        return _TENS[n // 10] + (f"-{_ONES[n % 10]}" if n % 10 else "")
-    raise ValueError(f"no words for {n}")
-
 
 def is_plural(head: str) -> bool:
     """'drums', 'shelves', 'electronics' take plural verbs; 'glass', 'cactus', 'lens' do not."""

@@ -35,24 +35,12 @@ from __future__ import annotations
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.phrasings import number_words
+from ragnav_jax.language.phrasings_dev4 import _and
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
 # Small helpers
-
-_ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
-         "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen")
-_TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
-
-
-def number_words(n: int) -> str:
-    """An integer in [-99, 99] in words: 22 -> 'twenty-two', -18 -> 'minus eighteen'."""
-    if n < 0:
-        return "minus " + number_words(-n)
-    if n < 20:
-        return _ONES[n]
-    t, o = divmod(n, 10)
-    return _TENS[t] + ("" if o == 0 else "-" + _ONES[o])
 
 
 def split_attributes(t: Target) -> tuple[list[str], list[str]]:
@@ -67,10 +55,6 @@ def split_attributes(t: Target) -> tuple[list[str], list[str]]:
         else:
             states.append(a)
     return pre, states
-
-
-def _and(items: list[str]) -> str:
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 # ----------------------------------------------------------------------------------------------------

@@ -30,7 +30,9 @@ from __future__ import annotations
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
-from ragnav_jax.language.phrasings_dev8 import _and, is_plural, number_words, split_attributes
+from ragnav_jax.language.phrasings import number_words
+from ragnav_jax.language.phrasings_dev4 import _and
+from ragnav_jax.language.phrasings_dev8 import is_plural, split_attributes
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
