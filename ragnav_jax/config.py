@@ -475,6 +475,11 @@ class EvalConfig:
     # or coordinate hint (0 = none; evaluation/search.py)
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
     # goals naming nothing it knows dropped (evaluation/grounding.py)
+    tagger: bool = False  # the parse is reconciled with the instruction tagger before grounding: remarks it is sure
+    # name no goal dropped, goal phrases it is sure of and the parse missed added (language/tagger.py)
+    tagger_file: str = ""  # tagger.npz (`ragnav fit-tagger`; "" = ragnav_jax/data/tagger.npz)
+    tagger_conf: float = 0.0  # probability above which the tagger's reading overrides the parse (0 = the value
+    # fitted with the tagger on seen-split houses, `ragnav fit-tagger`)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
     verify_confusion: float = 0.01  # ... and chance the object is named as a similar category
@@ -483,6 +488,7 @@ class EvalConfig:
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
         _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
+        _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",

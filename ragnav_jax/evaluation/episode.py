@@ -45,10 +45,11 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.evaluation.grounding import MemoryGrounder
+from ragnav_jax.evaluation.grounding import MemoryGrounder, TaggedReading
 from ragnav_jax.evaluation.search import search_table
 from ragnav_jax.evaluation.verify import Verifier, memory_views, name_classes, recorded, verdict_table, vocabulary
 from ragnav_jax.language.episodes import Episode
+from ragnav_jax.language.tagger import load_tagger
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
@@ -162,7 +163,8 @@ class Candidates:
     scores: list = dataclasses.field(default_factory=list)  # per episode, per goal, per candidate: retrieval score
     # (RAGNav: the relaxed one for candidates the hard constraints dropped) or None (Oracle)
     ungrounded: dict = dataclasses.field(default_factory=dict)  # episode id -> parsed goal phrases naming nothing
-    # the memory knows, dropped before retrieval (evaluation/grounding.py)
+    # the memory knows, dropped before retrieval (evaluation/grounding.py), or remarks the tagger dropped
+    tagged: dict = dataclasses.field(default_factory=dict)  # episode id -> goal phrases the tagger added (eval.tagger)
 
 
 @jax.jit
@@ -260,6 +262,10 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     names = list(bank.names)
     by_name = {s.name: s for s in scenes}
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
+    if cfg.eval.tagger and spec.retrieval != "oracle":
+        tagger = load_tagger(cfg.eval.tagger_file)
+        conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
+        ground = TaggedReading(tagger, episodes, conf, then=ground)
     items = goal_items(episodes, ground, every_subgoal=True)
     per_ep: dict[str, list] = defaultdict(list)
     subgoals: dict[str, object] = {}
@@ -367,7 +373,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     scores = [[score_of.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,
-                      [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {})
+                      [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {},
+                      getattr(ground, "added", {}))
 
 
 # ----------------------------------------------------------------------------------------------------

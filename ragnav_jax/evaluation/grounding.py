@@ -165,3 +165,30 @@ class MemoryGrounder:
         if dropped:
             self.dropped[ep.id] = dropped
         return kept
+
+
+class TaggedReading:
+    """The parse reconciled with the instruction tagger (`language/tagger.py: reconcile`), then handed to
+    `then` (the memory grounder) if any: a `ground` hook of goal_items / prepare_batch. The tagger reads
+    every instruction once, batched, when the hook is made. `dropped[episode id]` keeps the phrases the
+    tagger and the grounder dropped; `added[episode id]` the goal phrases the tagger added."""
+
+    def __init__(self, tagger, episodes, conf: float, then=None):
+        texts = sorted({ep.instruction for ep in episodes})
+        self.probs = dict(zip(texts, tagger.word_probs(texts)))
+        self.conf, self.then, self.added, self._dropped = conf, then, {}, {}
+
+    def __call__(self, ep, subgoals):
+        from ragnav_jax.language.tagger import reconcile
+
+        subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf)
+        if dropped:
+            self._dropped[ep.id] = dropped
+        if added:
+            self.added[ep.id] = added
+        return self.then(ep, subgoals) if self.then is not None else subgoals
+
+    @property
+    def dropped(self) -> dict:
+        inner = self.then.dropped if self.then is not None else {}
+        return {k: self._dropped.get(k, ()) + tuple(inner.get(k, ())) for k in {*self._dropped, *inner}}

@@ -125,6 +125,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
         "wrong_declarations": sum(not d["correct"] for d in st.declarations),
         "rejected_candidates": int(sum(st.rejected)), "max_penetration_m": round(st.penetration, 4),
         "reason": reason, "ungrounded": list(cands.ungrounded.get(ep.id, ())),
+        "tagged": list(cands.tagged.get(ep.id, ())),
         **({"legs": st.legs} if st.legs else {}),
     }
 

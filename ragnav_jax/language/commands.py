@@ -118,8 +118,33 @@ def cmd_check_parse(args, cfg) -> int:
     return 0 if ok / len(episodes) >= args.min_rate else 1
 
 
+def cmd_fit_tagger(args, cfg) -> int:
+    from ragnav_jax.language.tagger import (TRAIN_SPLITS, FitSettings, InstructionTagger, fit_conf, fit_tagger,
+                                            save_tagger)
+    from ragnav_jax.runs import init_run, refuse_overwrite
+
+    out = Path(args.out)
+    splits = tuple(s.strip() for s in args.splits.split(",")) if args.splits else TRAIN_SPLITS
+    bad = [s for s in splits if s not in TRAIN_SPLITS]
+    if bad:
+        raise UserError(f"--splits: {bad[0]!r} is not a training template set ({', '.join(TRAIN_SPLITS)})")
+    refuse_overwrite([out / "tagger.npz"], args.force)
+    init_run(out, cfg, "fit-tagger")
+    settings = FitSettings(scenes=args.scenes, seed=args.seed, lora=args.lora, epochs=args.epochs)
+    trained, meta = fit_tagger(cfg, settings, splits, progress=not args.quiet)
+    # the confidence, on other seen-split houses than the training ones
+    meta["reconcile"] = fit_conf(InstructionTagger(trained, meta), cfg, args.scenes, args.seed + 1, splits)
+    path = save_tagger(trained, meta, out / "tagger.npz")
+    write_json(out / "tagger.json", meta)
+    print(f"tagger fitted on {meta['fitted_on']['examples']} examples (+{meta['fitted_on']['augmented']} augmented) of "
+          f"{len(splits)} template sets over {args.scenes} seen-split houses, final loss {meta['final_loss']:.4f}, "
+          f"confidence {meta['reconcile']['conf']} -> {path};"
+          f" use with eval.tagger_file={path}")
+    return 0
+
+
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    from ragnav_jax.argtypes import nonneg_int, unit_float
+    from ragnav_jax.argtypes import nonneg_int, positive_int, unit_float
     from ragnav_jax.cli import PositionalsAndOverrides
 
     # The instruction is free text (it may hold "x=3.5"), so overrides come with --set instead of positionally.
@@ -147,3 +172,14 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--show", type=nonneg_int, default=20, help="disagreements to print")
     p.add_argument("--min-rate", type=unit_float, default=0.99, help="exit 1 below this agreement")
     p.set_defaults(func=cmd_check_parse)
+
+    p = sub.add_parser("fit-tagger", parents=[common],
+                       help="fit the instruction tagger (goal phrases) on seen-split houses (writes OUT/tagger.npz)")
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--scenes", type=positive_int, default=8, help="seen-split training houses (default 8)")
+    p.add_argument("--seed", type=nonneg_int, default=4242, help="seed of houses, episodes and training (default 4242)")
+    p.add_argument("--lora", type=positive_int, default=8, help="adapter rank (default 8)")
+    p.add_argument("--epochs", type=positive_int, default=3, help="passes over the examples (default 3)")
+    p.add_argument("--splits", help="template sets to learn from, comma-separated (default: seen and unseen_dev..8)")
+    p.add_argument("--force", action="store_true", help="overwrite an earlier OUT/tagger.npz")
+    p.set_defaults(func=cmd_fit_tagger)

@@ -85,6 +85,7 @@ class BertShape:
 
 class BertLayer(nn.Module):
     shape: BertShape
+    lora: int = 0  # rank of low-rank adapters added to the query and value projections (0 = none)
 
     @nn.compact
     def __call__(self, h, bias):  # h (B, L, H); bias (B, 1, 1, L) additive attention mask
@@ -95,9 +96,16 @@ class BertLayer(nn.Module):
         def split(x):
             return x.reshape(B, L, s.heads, dh).transpose(0, 2, 1, 3)
 
-        q = split(nn.Dense(H, name="query")(h))
+        def adapted(name):  # W x + B (A x): the adapter starts at zero (B = 0), so rank r changes nothing untrained
+            y = nn.Dense(H, name=name)(h)
+            if self.lora:
+                a = nn.Dense(self.lora, use_bias=False, name=f"{name}_lora_a")(h)
+                y = y + nn.Dense(H, use_bias=False, kernel_init=nn.initializers.zeros, name=f"{name}_lora_b")(a)
+            return y
+
+        q = split(adapted("query"))
         k = split(nn.Dense(H, name="key")(h))
-        v = split(nn.Dense(H, name="value")(h))
+        v = split(adapted("value"))
         att = jnp.einsum("bhqd,bhkd->bhqk", q, k) / jnp.sqrt(jnp.float32(dh)) + bias
         att = jax.nn.softmax(att, axis=-1)
         ctx = jnp.einsum("bhqk,bhkd->bhqd", att, v).transpose(0, 2, 1, 3).reshape(B, L, H)
@@ -107,9 +115,15 @@ class BertLayer(nn.Module):
 
 
 class MiniLM(nn.Module):
-    """Sentence embedding: BERT encoder, mean pooling over the attention mask, L2 normalisation."""
+    """Sentence embedding: BERT encoder, mean pooling over the attention mask, L2 normalisation.
+
+    pool=False returns the encoder's token states (B, L, H) instead (the instruction tagger reads them);
+    lora > 0 adds rank-`lora` adapters to every layer's query and value projections.
+    """
 
     shape: BertShape = BertShape()
+    pool: bool = True
+    lora: int = 0
 
     @nn.compact
     def __call__(self, ids, mask):  # ids, mask: (B, L) int32 -> (B, H) float32 unit rows
@@ -121,7 +135,9 @@ class MiniLM(nn.Module):
         h = nn.LayerNorm(epsilon=s.eps, name="emb_ln")(h)
         bias = jnp.where(mask[:, None, None, :] > 0, 0.0, jnp.finfo(jnp.float32).min).astype(jnp.float32)
         for i in range(s.layers):
-            h = BertLayer(s, name=f"layer_{i}")(h, bias)
+            h = BertLayer(s, self.lora, name=f"layer_{i}")(h, bias)
+        if not self.pool:
+            return h
         m = mask.astype(jnp.float32)[:, :, None]
         pooled = (h * m).sum(axis=1) / jnp.maximum(m.sum(axis=1), 1e-9)
         norm = jnp.linalg.norm(pooled, axis=-1, keepdims=True)

@@ -1,0 +1,471 @@
+"""A learned reader of where an instruction's goals are: MiniLM with low-rank adapters, tagging each word.
+
+    tagger = InstructionTagger.load()                  # the fitted adapter of ragnav_jax/data/tagger.npz
+    probs = tagger.word_probs(["first the sofa, then the fridge"])   # [(n_words, 5)] over TAGS
+
+The rule parser is written beside the sentences it has met, and each new author's phrasing breaks it in
+the same two ways: a remark is read as a goal, or two goals run into one. Which words name a goal is a
+matter of syntax more than of the words themselves, and a pretrained encoder carries syntax. The tagger
+labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/I-A (an anchor's).
+
+Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
+evaluation house), episodes written with the seen templates and the development template sets (the ones
+the parser rounds were developed against; never `unseen`, the held-out set), labelled from the
+generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
+encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
+a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
+query and value) and the tag head are trained; the encoder's weights stay those of all-MiniLM-L6-v2,
+so the fitted file holds a few hundred kilobytes.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import json
+import re
+from collections.abc import Sequence
+from pathlib import Path
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import optax
+from flax import linen as nn
+from flax import traverse_util
+
+from ragnav_jax.errors import UserError
+from ragnav_jax.memory.encoder import BertShape, MiniLM, MiniLMEmbedder
+
+TAGS = ("O", "B-T", "I-T", "B-A", "I-A")
+O, BT, IT, BA, IA = range(len(TAGS))
+TAGGER_FORMAT = "ragnav-tagger/1"
+MAX_TOKENS = 128
+_WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\S")
+# the template sets a tagger may learn from: the seen templates and the development sets, never `unseen`
+TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
+                "unseen_dev7", "unseen_dev8")
+
+
+def words(text: str) -> list[str]:
+    """The tagger's words: runs of letters and digits (with inner ' - .), and single other characters."""
+    return _WORD.findall(text)
+
+
+def spans(tags: Sequence[int], begin: int = BT) -> list[tuple[int, int]]:
+    """[start, end) word ranges of the phrases tagged `begin` (B-T or B-A) and continued by the I tag after it."""
+    out, i = [], 0
+    while i < len(tags):
+        if tags[i] == begin:
+            j = i + 1
+            while j < len(tags) and tags[j] == begin + 1:
+                j += 1
+            out.append((i, j))
+            i = j
+        else:
+            i += 1
+    return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# Labels from the generator's truth
+
+
+def _find(ws: list[str], seq: list[str], lo: int, hi: int, used: set) -> int:
+    n = len(seq)
+    for i in range(lo, hi - n + 1):
+        if all(ws[i + j] == seq[j] for j in range(n)) and not used & set(range(i, i + n)):
+            return i
+    return -1
+
+
+def _anchors(t):
+    for r in t.relations:
+        yield r.anchor
+        yield from _anchors(r.anchor)
+
+
+def label_words(instruction: str, truth) -> tuple[list[str], list[int]] | None:
+    """(words, tags) of a generated instruction from its truth TaskChain; None where a goal's words cannot
+    be found in order (the example is left out). A phrase is found as written (attributes and head) or,
+    failing that, by its head alone; anchors are placed first so a goal's name used as another goal's
+    anchor is not taken twice."""
+    ws = [w.lower() for w in words(instruction)]
+    tags, used, pos = [O] * len(ws), set(), 0
+    for sg in truth.subgoals:
+        found = []
+        for t, kind in [*((a, BA) for a in _anchors(sg.target)), (sg.target, BT)]:
+            for text in (t.phrase, t.head):
+                i = _find(ws, words(text.lower()), pos if kind == BT else 0, len(ws), used)
+                if i >= 0:
+                    n = len(words(text.lower()))
+                    used |= set(range(i, i + n))
+                    found.append((i, n, kind))
+                    break
+            else:
+                if kind == BT:
+                    return None
+        for i, n, kind in found:
+            tags[i : i + n] = [kind] + [kind + 1] * (n - 1)
+        pos = max(i + n for i, n, k in found if k == BT)
+    return ws, tags
+
+
+def augment(ws: list[str], tags: list[int], rng: np.random.Generator, vocab: Sequence[str]) -> list[str]:
+    """The words with every tagged phrase replaced by random vocabulary words (one replacement per phrase)."""
+    out, sub = list(ws), {}
+    for begin in (BT, BA):
+        for i, j in spans(tags, begin):
+            key = " ".join(ws[i:j])
+            if key not in sub:
+                sub[key] = [vocab[k] for k in rng.integers(0, len(vocab), j - i)]
+            out[i:j] = sub[key]
+    return out
+
+
+def filler_vocabulary(tokenizer) -> list[str]:
+    """Whole lower-case words of 3-12 letters in the encoder's vocabulary that are not closed-class words."""
+    from ragnav_jax.language.lexicon import CLOSED_CLASS
+
+    return sorted(w for w in tokenizer.get_vocab() if re.fullmatch("[a-z]{3,12}", w) and w not in CLOSED_CLASS)
+
+
+def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS,
+                      per_scene: tuple[int, int, int] = (10, 5, 5)) -> list[tuple[list[str], list[int]]]:
+    """(words, tags) of episodes written with each template set in `splits` over `scenes` seen-split houses."""
+    from ragnav_jax.evaluation.fitting import _seen_scenes
+    from ragnav_jax.language.episodes import generate_episodes
+
+    bad = [s for s in splits if s not in TRAIN_SPLITS]
+    if bad:
+        raise UserError(f"tagger splits: {bad[0]!r} is not a training template set ({', '.join(TRAIN_SPLITS)})")
+    houses = _seen_scenes(cfg, scenes, seed)
+    out = []
+    for split in splits:
+        ecfg = dataclasses.replace(cfg.episodes, split=split, text=per_scene[0], text_location=per_scene[1],
+                                   text_location_sensor=per_scene[2])
+        for g in generate_episodes(houses, ecfg, seed):
+            got = label_words(g.episode.instruction, g.truth)
+            if got is not None:
+                out.append(got)
+    return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# The model
+
+
+class Tagger(nn.Module):
+    """MiniLM token states (with adapters) -> (B, L, len(TAGS)) tag logits."""
+
+    shape: BertShape
+    lora: int = 8
+
+    @nn.compact
+    def __call__(self, ids, train: bool = False):  # ids (B, L) int32, 0 = padding
+        h = MiniLM(self.shape, pool=False, lora=self.lora, name="enc")(ids, (ids > 0).astype(jnp.int32))
+        h = nn.Dropout(0.1, deterministic=not train)(h)
+        return nn.Dense(len(TAGS), name="tag")(h)
+
+
+def _is_trained(path: tuple[str, ...]) -> bool:
+    return path[0] == "tag" or "_lora_" in path[-2]
+
+
+def split_params(params: dict) -> tuple[dict, dict]:
+    """(trained, frozen) flat dicts of the tagger's {'params': ...} tree: adapters and head, and the rest."""
+    flat = traverse_util.flatten_dict(params["params"])
+    return ({k: v for k, v in flat.items() if _is_trained(k)}, {k: v for k, v in flat.items() if not _is_trained(k)})
+
+
+def join_params(trained: dict, frozen: dict) -> dict:
+    return {"params": traverse_util.unflatten_dict({**frozen, **trained})}
+
+
+def encode_words(tokenizer, wordlists: Sequence[Sequence[str]]) -> tuple[np.ndarray, np.ndarray]:
+    """(ids (n, MAX_TOKENS) int32, first (n, MAX_TOKENS) int32: the word each word's first token starts, -1
+    elsewhere) of pre-split word lists."""
+    encs = tokenizer.encode_batch([list(w) for w in wordlists], is_pretokenized=True)
+    ids = np.zeros((len(encs), MAX_TOKENS), np.int32)
+    first = np.full((len(encs), MAX_TOKENS), -1, np.int32)
+    for i, e in enumerate(encs):
+        n = min(len(e.ids), MAX_TOKENS)
+        ids[i, :n] = e.ids[:n]
+        prev = None
+        for t, w in enumerate(e.word_ids[:n]):
+            if w is not None and w != prev:
+                first[i, t] = w
+            prev = w
+    return ids, first
+
+
+def _length(ids: np.ndarray) -> int:
+    n = int((ids > 0).sum(1).max())
+    return next(b for b in (32, 64, 96, MAX_TOKENS) if n <= b)
+
+
+@dataclasses.dataclass(frozen=True)
+class FitSettings:
+    """How the tagger is fitted (`ragnav fit-tagger`)."""
+
+    scenes: int = 8  # seen-split houses drawn for the examples
+    seed: int = 4242  # houses, episodes, augmentation, initialisation and batches
+    lora: int = 8  # adapter rank
+    epochs: int = 3
+    batch: int = 16
+    lr: float = 1e-3
+    augment: float = 1.0  # augmented copies per example (0 = none)
+
+
+def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str] = TRAIN_SPLITS,
+               progress: bool = False) -> tuple[dict, dict]:
+    """Trains the adapters and the head; returns (trained flat params, metadata for the fitted file)."""
+    base = MiniLMEmbedder()
+    rng = np.random.default_rng(settings.seed)
+    examples = training_examples(cfg, settings.scenes, settings.seed, splits)
+    vocab = filler_vocabulary(base.tokenizer)
+    ws = [w for w, _ in examples]
+    tg = [t for _, t in examples]
+    for _ in range(int(settings.augment)):
+        ws += [augment(w, t, rng, vocab) for w, t in examples]
+        tg += [t for _, t in examples]
+    ids, first = encode_words(base.tokenizer, ws)
+    y = np.where(first >= 0, np.take_along_axis(_pad_tags(tg), np.maximum(first, 0), 1), -1).astype(np.int32)
+    model = Tagger(base.shape, settings.lora)
+    key = jax.random.PRNGKey(settings.seed)
+    key, k0 = jax.random.split(key)
+    init = model.init(k0, jnp.asarray(ids[:2, :32]))
+    trained, _ = split_params(init)
+    init_flat = traverse_util.flatten_dict(init["params"])
+    pre = {("enc", *k): v for k, v in traverse_util.flatten_dict(base.params["params"]).items()}
+    frozen = {k: pre[k] for k in init_flat if not _is_trained(k)}
+    steps = settings.epochs * (len(ids) // settings.batch)
+    sched = optax.warmup_cosine_decay_schedule(0.0, settings.lr, max(1, steps // 10), max(1, steps))
+    opt = optax.adamw(sched, weight_decay=0.01)
+    state = opt.init(trained)
+
+    def loss_fn(tr, x, t, k):
+        logits = model.apply(join_params(tr, frozen), x, True, rngs={"dropout": k})
+        m = t >= 0
+        ce = optax.softmax_cross_entropy_with_integer_labels(logits, jnp.maximum(t, 0))
+        return (ce * m).sum() / jnp.maximum(m.sum(), 1)
+
+    @jax.jit
+    def step(tr, st, x, t, k):
+        loss, g = jax.value_and_grad(loss_fn)(tr, x, t, k)
+        upd, st = opt.update(g, st, tr)
+        return optax.apply_updates(tr, upd), st, loss
+
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=steps, desc="fit-tagger", unit="step")
+    losses = []
+    for _ in range(settings.epochs):
+        order = rng.permutation(len(ids))
+        for s in range(0, len(order) - settings.batch + 1, settings.batch):
+            b = order[s : s + settings.batch]
+            L = _length(ids[b])
+            key, k = jax.random.split(key)
+            trained, state, loss = step(trained, state, jnp.asarray(ids[b, :L]), jnp.asarray(y[b, :L]), k)
+            losses.append(float(loss))
+            if bar is not None:
+                bar.update(1)
+                bar.set_postfix(loss=f"{losses[-1]:.4f}")
+    if bar is not None:
+        bar.close()
+    meta = {"format": TAGGER_FORMAT, "lora": settings.lora, "tags": list(TAGS),
+            "fitted_on": {"world_split": "seen", "template_sets": list(splits), "scenes": settings.scenes,
+                          "seed": settings.seed, "examples": len(examples), "augmented": len(ids) - len(examples)},
+            "settings": dataclasses.asdict(settings), "final_loss": float(np.mean(losses[-50:])) if losses else None,
+            "backend": jax.default_backend()}
+    return jax.device_get(trained), meta
+
+
+def _pad_tags(tags: Sequence[Sequence[int]]) -> np.ndarray:
+    n = max(len(t) for t in tags)
+    out = np.zeros((len(tags), max(n, 1)), np.int32)
+    for i, t in enumerate(tags):
+        out[i, : len(t)] = t
+    return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# The fitted file and inference
+
+
+def default_tagger_path() -> Path:
+    from importlib import resources
+
+    return Path(str(resources.files("ragnav_jax").joinpath("data").joinpath("tagger.npz")))
+
+
+def save_tagger(trained: dict, meta: dict, path: str | Path) -> Path:
+    """The adapters and head as float32 arrays named by their parameter path, with the metadata as JSON."""
+    from ragnav_jax.io import atomic_path
+
+    arrays = {"/".join(k): np.asarray(v, np.float32) for k, v in trained.items()}
+    path = Path(path)
+    with atomic_path(path) as tmp:
+        with open(tmp, "wb") as f:
+            np.savez(f, __meta__=np.frombuffer(json.dumps(meta, sort_keys=True).encode(), np.uint8), **arrays)
+    return path
+
+
+def load_tagger_file(path: str | Path) -> tuple[dict, dict]:
+    path = Path(path)
+    try:
+        with np.load(path) as z:
+            meta = json.loads(bytes(z["__meta__"]).decode())
+            trained = {tuple(k.split("/")): jnp.asarray(z[k]) for k in z.files if k != "__meta__"}
+    except (OSError, ValueError, KeyError) as e:
+        raise UserError(f"{path}: not a tagger file ({e.__class__.__name__}: {e})") from None
+    if meta.get("format") != TAGGER_FORMAT:
+        raise UserError(f"{path}: format {meta.get('format')!r} is not {TAGGER_FORMAT}")
+    return trained, meta
+
+
+@functools.lru_cache(maxsize=2)
+def load_tagger(path: str = "") -> InstructionTagger:
+    """The tagger of a fitted file ("" = ragnav_jax/data/tagger.npz), loaded once per process."""
+    return InstructionTagger.load(path or None)
+
+
+class InstructionTagger:
+    """The fitted tagger over the installed MiniLM weights; `word_probs` runs fixed-shape jitted batches."""
+
+    def __init__(self, trained: dict, meta: dict, batch_size: int = 32):
+        self.base = MiniLMEmbedder()
+        self.meta = meta
+        self.model = Tagger(self.base.shape, int(meta["lora"]))
+        pre = {("enc", *k): v for k, v in traverse_util.flatten_dict(self.base.params["params"]).items()}
+        self.params = join_params(trained, pre)
+        self.batch_size = batch_size
+        self._apply = jax.jit(lambda p, x: jax.nn.softmax(self.model.apply(p, x), -1))
+
+    @classmethod
+    def load(cls, path: str | Path | None = None) -> InstructionTagger:
+        return cls(*load_tagger_file(path or default_tagger_path()))
+
+    def word_probs(self, texts: Sequence[str]) -> list[np.ndarray]:
+        """Per text, (n_words, len(TAGS)) tag probabilities of `words(text)` (words past the token limit: O)."""
+        wl = [words(t) for t in texts]
+        ids, first = encode_words(self.base.tokenizer, wl)
+        out = [np.tile(np.eye(len(TAGS), dtype=np.float32)[O], (len(w), 1)) for w in wl]
+        for s in range(0, len(ids), self.batch_size):
+            x = ids[s : s + self.batch_size]
+            L = _length(x)
+            pad = np.zeros((self.batch_size, L), np.int32)
+            pad[: len(x)] = x[:, :L]
+            p = np.asarray(self._apply(self.params, jnp.asarray(pad)))
+            for r in range(len(x)):
+                t = np.nonzero(first[s + r, :L] >= 0)[0]
+                out[s + r][first[s + r, t]] = p[r, t]
+        return out
+
+
+# ----------------------------------------------------------------------------------------------------
+# Reconciling the parse with the tagger
+
+CONF_GRID = (0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
+CONF_CHANGES = 0.0  # share of correct parses the fitted confidence may change (none: a house of unseen
+# words makes the tagger less sure, so a share allowed on seen houses grows on new ones)
+
+
+def fit_conf(tagger: InstructionTagger, cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS) -> dict:
+    """The smallest confidence of CONF_GRID at which `reconcile` changes at most CONF_CHANGES of the parses
+    that read the true goals, on `scenes` seen-split houses of `seed` (not the training houses), episodes of
+    the template sets `splits`; with the changes at every grid value."""
+    from ragnav_jax.evaluation.fitting import _seen_scenes
+    from ragnav_jax.language.episodes import generate_episodes
+    from ragnav_jax.language.parser import parse_instruction
+    from ragnav_jax.language.types import ParseError
+
+    houses = _seen_scenes(cfg, scenes, seed)
+    texts, parses = [], []
+    for split in splits:
+        for g in generate_episodes(houses, dataclasses.replace(cfg.episodes, split=split), seed):
+            try:
+                sgs = parse_instruction(g.episode.instruction).subgoals
+            except ParseError:
+                continue
+            if [x.target.head for x in sgs] == [x.target.head for x in g.truth.subgoals]:
+                texts.append(g.episode.instruction)
+                parses.append(sgs)
+    probs = tagger.word_probs(texts)
+    changes = {c: sum(reconcile(t, sg, p, c)[0] != tuple(sg) for t, sg, p in zip(texts, parses, probs)) for c in CONF_GRID}
+    conf = next((c for c in CONF_GRID if changes[c] <= CONF_CHANGES * len(texts)), CONF_GRID[-1])
+    return {"conf": conf, "parses": len(texts), "changes": {str(c): n for c, n in changes.items()},
+            "fitted_on": {"world_split": "seen", "scenes": scenes, "seed": seed, "template_sets": list(splits)}}
+
+
+
+def _stem(word: str) -> str:
+    """A word as phrases are compared: lower case, no possessive, singular ('sunroom's' -> 'sunroom')."""
+    from ragnav_jax.language.parser import _singular
+
+    w = word.lower().removesuffix("'s").removesuffix("\u2019s")
+    return _singular(w) if len(w) > 3 else w
+
+
+def _structure(t) -> set[str]:
+    """Every word a parsed target accounts for: head, attributes and its anchors', recursively."""
+    out = {_stem(w) for x in (t.head, *t.attributes) for w in x.split()}
+    for r in t.relations:
+        out |= _structure(r.anchor)
+    return out
+
+
+def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9):
+    """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
+    is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
+
+    probs: (n_words, len(TAGS)) of `words(instruction)`. Words are compared by `_stem`. A parsed subgoal
+    is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
+    is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
+    as a goal). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged
+    above `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase)
+    at its place in the instruction (two goals read as one), unless its words are all words some kept
+    subgoal accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal). Everything
+    else is left as parsed: where the two agree on the goals, nothing changes.
+    """
+    from ragnav_jax.language.parser import split_noun_phrase
+    from ragnav_jax.language.types import Subgoal, Target
+
+    ws = [w.lower() for w in words(instruction)]
+    stems = [_stem(w) for w in ws]
+    tags = probs.argmax(-1) if len(probs) else np.zeros(0, int)
+    goals = spans(tags, BT)
+    held = [set(stems[i:j]) for i, j in goals]
+    sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > conf for i, j in goals]
+    kept, where, dropped, taken = [], [], [], set()
+    for sg in subgoals:
+        head = {_stem(w) for w in sg.target.head.split()}
+        ks = [k for k in range(len(goals)) if head & held[k]]
+        if not ks:
+            occ = [n for n, w in enumerate(stems) if w in head]
+            if occ and all(probs[n, O] > conf for n in occ):
+                dropped.append(sg.target.phrase)
+                continue
+            where.append(occ[0] if occ else 0)
+        else:
+            k = next((k for k in ks if k not in taken), ks[0])
+            taken.add(k)
+            where.append(goals[k][0])
+        kept.append(sg)
+    accounted = set().union(*(_structure(sg.target) | {_stem(w) for w in (sg.room or "").split()} for sg in kept))
+    added = []
+    for k, (i, j) in enumerate(goals):
+        if k in taken or not sure[k] or held[k] <= accounted:
+            continue
+        attrs, head = split_noun_phrase(ws[i:j])
+        phrase = " ".join(ws[i:j])
+        added.append(phrase)
+        kept.append(Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase))
+        where.append(i)
+    if not dropped and not added:
+        return tuple(subgoals), (), ()
+    order = sorted(range(len(kept)), key=lambda n: (where[n], n))
+    out = tuple(dataclasses.replace(kept[n], index=m) for m, n in enumerate(order))
+    return out, tuple(dropped), tuple(added)

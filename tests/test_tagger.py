@@ -1,0 +1,137 @@
+"""The instruction tagger: labels from the generator's truth, augmentation, reconciling a parse with it,
+the adapters, fitting on seen houses only, and the fitted file."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ragnav_jax.config import Config
+from ragnav_jax.errors import UserError
+from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.types import Subgoal, Target
+from ragnav_jax.language.tagger import (BA, BT, IA, IT, O, TAGS, augment, label_words, reconcile, spans,
+                                        training_examples, words)
+
+SENTENCE = "Go to the red mug near the lamp, then the sofa."
+
+
+def probs_for(text: str, tagged: dict[str, int], p: float = 0.99) -> np.ndarray:
+    """(n_words, 5) probabilities: the words of `tagged` (word -> tag) get that tag with probability p, the
+    rest O with probability p."""
+    ws = [w.lower() for w in words(text)]
+    out = np.full((len(ws), len(TAGS)), (1 - p) / (len(TAGS) - 1), np.float32)
+    for i, w in enumerate(ws):
+        out[i, tagged.get(w, O)] = p
+    return out
+
+
+def test_labels_mark_goal_phrases_and_anchors():
+    chain = parse_instruction(SENTENCE)
+    ws, tags = label_words(SENTENCE, chain)
+    tagged = {w: t for w, t in zip(ws, tags) if t != O}
+    assert tagged == {"red": BT, "mug": IT, "lamp": BA, "sofa": BT}
+    assert spans(tags, BT) == [(3, 5), (11, 12)] and spans(tags, BA) == [(7, 8)]
+
+
+def test_a_goal_named_as_another_goals_anchor_is_labelled_twice():
+    text = "First the lamp next to the sofa, then the sofa."
+    ws, tags = label_words(text, parse_instruction(text))
+    assert [tags[i] for i, w in enumerate(ws) if w == "sofa"] == [BA, BT]
+
+
+def test_labels_of_an_instruction_missing_a_goal_are_refused():
+    chain = parse_instruction(SENTENCE)
+    assert label_words("Go to the red cup near the lamp, then the sofa.", chain) is None
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 2**31 - 1))
+def test_augmentation_replaces_each_phrase_consistently_and_nothing_else(seed):
+    text = "First the lamp next to the sofa, then the sofa and the red mug."
+    ws, tags = label_words(text, parse_instruction(text))
+    vocab = [f"w{k}" for k in range(50)]
+    out = augment(ws, tags, np.random.default_rng(seed), vocab)
+    assert [a for a, t in zip(out, tags) if t == O] == [a for a, t in zip(ws, tags) if t == O]
+    assert all(a in vocab for a, t in zip(out, tags) if t != O)
+    sofas = [out[i] for i, w in enumerate(ws) if w == "sofa"]
+    assert len(set(sofas)) == 1  # the same phrase, the same replacement, anchor or goal
+
+
+def test_reconcile_changes_nothing_where_tagger_and_parse_agree():
+    sgs = parse_instruction(SENTENCE).subgoals
+    p = probs_for(SENTENCE, {"red": BT, "mug": IT, "lamp": BA, "sofa": BT})
+    assert reconcile(SENTENCE, sgs, p) == (sgs, (), ())
+
+
+def misread(text: str, extra: str) -> tuple:
+    """The parse of `text` with a remark read as a third goal named `extra`."""
+    sgs = parse_instruction(text).subgoals
+    return (*sgs, Subgoal(len(sgs), Target(extra, extra), text=extra))
+
+
+def test_reconcile_drops_a_remark_read_as_a_goal():
+    text = "Go to the sofa, then the fridge, whatever suits you."
+    sgs = misread("Go to the sofa, then the fridge.", "suits you")
+    p = probs_for(text, {"sofa": BT, "fridge": BT})
+    out, dropped, added = reconcile(text, sgs, p)
+    assert [s.target.head for s in out] == ["sofa", "fridge"] and dropped == ("suits you",) and not added
+    assert [s.index for s in out] == [0, 1]
+
+
+def test_reconcile_adds_a_goal_run_into_another_in_its_place():
+    text = "Visit the sofa, the green kettle and the lamp."
+    sgs = tuple(s for s in parse_instruction(text).subgoals if s.target.head != "kettle")
+    p = probs_for(text, {"sofa": BT, "green": BT, "kettle": IT, "lamp": BT})
+    out, dropped, added = reconcile(text, sgs, p)
+    assert [s.target.head for s in out] == ["sofa", "kettle", "lamp"] and added == ("green kettle",)
+    assert out[1].target.attributes == ("green",) and not dropped
+
+
+@pytest.mark.parametrize("p", [0.6, 0.85])
+def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
+    text = "Go to the sofa, then the fridge, whatever suits you."
+    sgs = misread("Go to the sofa, then the fridge.", "suits you")
+    probs = probs_for(text, {"sofa": BT, "fridge": BT, "kettle": BT}, p=p)
+    assert reconcile(text, sgs, probs, conf=0.9) == (sgs, (), ())
+
+
+def test_training_examples_read_no_held_out_template_set():
+    with pytest.raises(UserError, match="'unseen' is not a training template set"):
+        training_examples(Config(), 1, 0, ("seen", "unseen"))
+
+
+def test_training_examples_read_seen_houses_only():
+    cfg = Config()
+    cfg = dataclasses.replace(cfg, world=dataclasses.replace(cfg.world, split="unseen"))
+    with pytest.raises(UserError, match="seen split only"):
+        training_examples(cfg, 1, 0, ("seen",))
+
+
+def test_training_examples_are_labelled_and_deterministic():
+    a = training_examples(Config(), 1, 3, ("seen", "unseen_dev8"), (2, 1, 1))
+    b = training_examples(Config(), 1, 3, ("seen", "unseen_dev8"), (2, 1, 1))
+    assert a == b and len(a) >= 6
+    assert all(len(ws) == len(tags) and BT in tags for ws, tags in a)
+
+
+def test_untrained_adapters_change_no_token_state():
+    import jax
+    import jax.numpy as jnp
+
+    from ragnav_jax.memory.encoder import BertShape, MiniLM
+
+    shape = BertShape(vocab_size=50, hidden=16, layers=2, heads=2, intermediate=32, max_positions=16)
+    ids = jnp.array([[3, 7, 9, 0]], jnp.int32)
+    mask = (ids > 0).astype(jnp.int32)
+    plain = MiniLM(shape, pool=False)
+    adapted = MiniLM(shape, pool=False, lora=4)
+    pa = adapted.init(jax.random.PRNGKey(0), ids, mask)
+    pp = {"params": {k: {n: v for n, v in layer.items() if "_lora_" not in n} if k.startswith("layer_") else layer
+                     for k, layer in pa["params"].items()}}
+    np.testing.assert_allclose(adapted.apply(pa, ids, mask), plain.apply(pp, ids, mask), atol=1e-6)
+    assert adapted.apply(pa, ids, mask).shape == (1, 4, 16)
