@@ -13,9 +13,20 @@ from hypothesis import strategies as st
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.tagger import (
+    BA,
+    BT,
+    IT,
+    TAGS,
+    O,
+    augment,
+    label_words,
+    reconcile,
+    spans,
+    training_examples,
+    words,
+)
 from ragnav_jax.language.types import Subgoal, Target
-from ragnav_jax.language.tagger import (BA, BT, IA, IT, O, TAGS, augment, label_words, reconcile, spans,
-                                        training_examples, words)
 
 SENTENCE = "Go to the red mug near the lamp, then the sofa."
 
@@ -135,3 +146,96 @@ def test_untrained_adapters_change_no_token_state():
                      for k, layer in pa["params"].items()}}
     np.testing.assert_allclose(adapted.apply(pa, ids, mask), plain.apply(pp, ids, mask), atol=1e-6)
     assert adapted.apply(pa, ids, mask).shape == (1, 4, 16)
+
+
+class FakeTagger:
+    """word_probs from a fixed word -> tag table (every other word O), as sure as `p`."""
+
+    def __init__(self, tagged: dict[str, int], p: float = 0.999):
+        self.tagged, self.p, self.calls = tagged, p, 0
+
+    def word_probs(self, texts):
+        self.calls += 1
+        return [probs_for(t, self.tagged, self.p) for t in texts]
+
+
+def test_tagged_reading_reads_each_instruction_once_and_hands_on_to_grounding():
+    from ragnav_jax.evaluation.grounding import TaggedReading
+    from ragnav_jax.language.episodes import Episode
+
+    text = "Go to the sofa, then the fridge, whatever suits you."
+    eps = [Episode("e0", "s", text, ("a", "b")), Episode("e1", "s", text, ("a", "b"))]
+    seen = []
+
+    class Then:
+        dropped = {"e0": ("fridge",)}
+
+        def __call__(self, ep, sgs):
+            seen.append([s.target.head for s in sgs])
+            return sgs[:1]
+
+    tagger = FakeTagger({"sofa": BT, "fridge": BT})
+    hook = TaggedReading(tagger, eps, 0.9, then=Then())
+    out = hook(eps[0], misread("Go to the sofa, then the fridge.", "suits you"))
+    assert tagger.calls == 1 and seen == [["sofa", "fridge"]] and [s.target.head for s in out] == ["sofa"]
+    assert hook.dropped == {"e0": ("suits you", "fridge")} and hook.added == {}
+
+
+def test_fitted_confidence_is_the_smallest_that_changes_no_correct_parse():
+    from ragnav_jax.language.tagger import CONF_GRID, fit_conf
+
+    # a tagger sure of nothing but O: every parsed goal is a remark to it, at any confidence below p
+    got = fit_conf(FakeTagger({}, p=0.97), Config(), 1, 5, ("seen",))
+    changes = [got["changes"][str(c)] for c in CONF_GRID]
+    assert changes == sorted(changes, reverse=True) and changes[0] == got["parses"] > 0
+    assert got["conf"] == 0.98 and got["changes"]["0.98"] == 0
+
+
+def test_the_fitted_tagger_finds_the_goals_of_a_sentence_no_template_writes():
+    from ragnav_jax.language.tagger import load_tagger
+
+    text = "Could you pop by the gramophone and then the aquarium heater, no rush, whatever order works."
+    p = load_tagger("").word_probs([text])[0]
+    ws = words(text)
+    assert [" ".join(ws[i:j]) for i, j in spans(p.argmax(-1), BT)] == ["gramophone", "aquarium heater"]
+
+
+def test_fitting_is_deterministic_and_the_file_round_trips(tmp_path):
+    from ragnav_jax.language.tagger import FitSettings, InstructionTagger, fit_tagger, load_tagger_file, save_tagger
+
+    s = FitSettings(scenes=1, epochs=1, batch=4, lora=2, augment=0)
+    a, meta = fit_tagger(Config(), s, ("seen",))
+    b, _ = fit_tagger(Config(), s, ("seen",))
+    assert a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a)
+    assert all(k[0] == "tag" or "_lora_" in k[-2] for k in a)  # only the adapters and the head are fitted
+    save_tagger(a, meta, tmp_path / "t.npz")
+    trained, meta2 = load_tagger_file(tmp_path / "t.npz")
+    assert meta2 == meta
+    texts = ["first the sofa, then the fridge", "go"]
+    np.testing.assert_array_equal(InstructionTagger(a, meta).word_probs(texts)[0],
+                                  InstructionTagger(trained, meta2).word_probs(texts)[0])
+
+
+def test_a_file_that_is_no_tagger_is_a_user_error(tmp_path):
+    from ragnav_jax.language.tagger import load_tagger_file
+
+    bad = tmp_path / "t.npz"
+    bad.write_text("not an archive")
+    with pytest.raises(UserError, match="t.npz: not a tagger file"):
+        load_tagger_file(bad)
+
+
+def test_parse_cli_reconciles_with_the_tagger(capsys):
+    import json
+
+    from ragnav_jax.cli import main
+
+    text = "could you check on the gramophone and the aquarium heater, cheers, and also the grandfather clock"
+    assert main(["parse", "--json", text]) == 0
+    plain = json.loads(capsys.readouterr().out)
+    assert main(["parse", "--json", "--tagger", text]) == 0
+    got = capsys.readouterr()
+    tagged = json.loads(got.out)
+    heads = [s["target"]["head"] for s in tagged["subgoals"]]
+    assert "cheers" in [s["target"]["head"] for s in plain["subgoals"]] and "cheers" not in heads
+    assert heads == ["gramophone", "aquarium heater", "grandfather clock"] and "dropped ['cheers']" in got.err

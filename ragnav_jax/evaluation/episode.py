@@ -54,6 +54,7 @@ from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
+from ragnav_jax.pytrees import take
 from ragnav_jax.retrieval import kernels as K
 from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
 from ragnav_jax.retrieval.evaluate import goal_items, parsed_order, prepare_batch, scored_batch
@@ -295,8 +296,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             score, relaxed, category, slot_best = map(np.asarray, terms)  # each (B, Q, N)
             node_live = np.asarray(batch.index.node_mask)  # (B, N)
             b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
-            idx0 = jax.tree.map(lambda x: x[b0], batch.index)
-            q0 = jax.tree.map(lambda x: x[b0, s0], batch.queries)
+            idx0 = take(batch.index, b0)
+            q0 = take(batch.queries, (b0, s0))
             single = _score_single
             jax.block_until_ready(single(idx0, q0, p))
             ts = []

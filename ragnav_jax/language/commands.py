@@ -18,11 +18,31 @@ def cmd_parse(args, cfg) -> int:
     chain, note = parse_with_fallback(text, cfg.llm if args.llm else None)
     if note:
         print(f"ragnav: note: {printable(note)}", file=sys.stderr)
+    if args.tagger:
+        chain = _tagged(chain, cfg)
     if not args.json:  # the description quotes the instruction: control characters are shown, not sent
         print(printable(chain.describe(), keep_newlines=True))
         print()
     print(json.dumps(chain.to_dict(), indent=None if args.json else 1))
     return 0
+
+
+def _tagged(chain, cfg):
+    """The chain reconciled with the instruction tagger (as `eval.tagger` does), what changed on stderr."""
+    import dataclasses
+
+    from ragnav_jax.language.tagger import BT, load_tagger, reconcile, spans, words
+    from ragnav_jax.language.types import derive_dependencies
+
+    tagger = load_tagger(cfg.eval.tagger_file)
+    conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
+    probs = tagger.word_probs([chain.instruction])[0]
+    ws = words(chain.instruction)
+    phrases = [" ".join(ws[i:j]) for i, j in spans(probs.argmax(-1), BT)]
+    subgoals, dropped, added = reconcile(chain.instruction, chain.subgoals, probs, conf)
+    print(f"ragnav: note: tagger (confidence {conf}): goal phrases {phrases}; dropped {list(dropped)}; "
+          f"added {list(added)}", file=sys.stderr)
+    return dataclasses.replace(chain, subgoals=subgoals, dependencies=derive_dependencies(subgoals, chain.order))
 
 
 def _scene_source(path: str) -> tuple[Path, Path | None]:
@@ -119,8 +139,14 @@ def cmd_check_parse(args, cfg) -> int:
 
 
 def cmd_fit_tagger(args, cfg) -> int:
-    from ragnav_jax.language.tagger import (TRAIN_SPLITS, FitSettings, InstructionTagger, fit_conf, fit_tagger,
-                                            save_tagger)
+    from ragnav_jax.language.tagger import (
+        TRAIN_SPLITS,
+        FitSettings,
+        InstructionTagger,
+        fit_conf,
+        fit_tagger,
+        save_tagger,
+    )
     from ragnav_jax.runs import init_run, refuse_overwrite
 
     out = Path(args.out)
@@ -156,6 +182,8 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--quiet", action="store_true", help=argparse.SUPPRESS)
     p.add_argument("--json", action="store_true", help="print only the JSON (one line)")
     p.add_argument("--llm", action="store_true", help="use the LLM endpoint of the config (llm.base_url), with fallback")
+    p.add_argument("--tagger", action="store_true",
+                   help="reconcile the parse with the instruction tagger, as eval.tagger does (eval.tagger_file)")
     p.set_defaults(func=cmd_parse)
 
     p = sub.add_parser("episodes", parents=[common], help="generate multi-goal episodes for a scene set")

@@ -183,8 +183,8 @@ def join_params(trained: dict, frozen: dict) -> dict:
 
 
 def encode_words(tokenizer, wordlists: Sequence[Sequence[str]]) -> tuple[np.ndarray, np.ndarray]:
-    """(ids (n, MAX_TOKENS) int32, first (n, MAX_TOKENS) int32: the word each word's first token starts, -1
-    elsewhere) of pre-split word lists."""
+    """(ids (n, MAX_TOKENS) int32, first (n, MAX_TOKENS) int32) of pre-split word lists: `first` holds, at
+    the first token of each word, the word's index, and -1 at every other token."""
     encs = tokenizer.encode_batch([list(w) for w in wordlists], is_pretokenized=True)
     ids = np.zeros((len(encs), MAX_TOKENS), np.int32)
     first = np.full((len(encs), MAX_TOKENS), -1, np.int32)

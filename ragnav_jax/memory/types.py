@@ -11,10 +11,11 @@ import dataclasses
 import hashlib
 import json
 
-import jax
 import jax.numpy as jnp
 import numpy as np
 from flax import struct
+
+from ragnav_jax.pytrees import stack, take
 
 FORMAT_VERSION = 1
 
@@ -126,11 +127,11 @@ class MemoryBank:
     def scene(self, name: str) -> tuple[DualBasisMemory, MemoryMeta]:
         """One scene's memory (no batch axis) and metadata."""
         b = self.index(name)
-        return jax.tree.map(lambda x: x[b], self.memory), self.metas[b]
+        return take(self.memory, b), self.metas[b]
 
 
 def stack_memories(memories: list[DualBasisMemory]) -> DualBasisMemory:
-    return jax.tree.map(lambda *xs: jnp.stack(xs), *memories)
+    return stack(memories)
 
 
 def memory_to_numpy(mem: DualBasisMemory) -> dict[str, np.ndarray]:

@@ -30,6 +30,7 @@ from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.language.types import ParseError, Subgoal, TaskChain
 from ragnav_jax.memory.types import MemoryBank
+from ragnav_jax.pytrees import take as take_leaves
 from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
 from ragnav_jax.retrieval.index import IndexMeta, build_bank_index, node_slots
 from ragnav_jax.retrieval.params import ABLATIONS, RetrievalParams, ablation_params
@@ -169,7 +170,7 @@ def prepare_batch(
             gidx = objects[ep.scene].get(goal, -1)
             truth[b, slot, : len(observed)] = [gidx in o for o in observed]
             group[b, slot, mods.index(ep.modality)] = True
-    queries = jax.tree.map(lambda x: x[jnp.asarray(take)], q_all)
+    queries = take_leaves(q_all, take)
     batch = RetrievalBatch(index=index, queries=queries, qmask=jnp.asarray(qmask), truth=jnp.asarray(truth),
                            group=jnp.asarray(group))
     return batch, BatchMeta(tuple(items), tuple(slots), mods, totals, tuple(imetas), embed_ms)
@@ -243,8 +244,8 @@ def evaluate_retrieval(
                 best_node[i] = best[bmeta.slots[i]]
             # Warm single-query latency: one subgoal, one scene.
             b0, s0 = bmeta.slots[live[0]]
-            idx0 = jax.tree.map(lambda x: x[b0], index)
-            q0 = jax.tree.map(lambda x: x[b0, s0], queries)
+            idx0 = take_leaves(index, b0)
+            q0 = take_leaves(queries, (b0, s0))
             single = jax.jit(score_subgoal)
             jax.block_until_ready(single(idx0, q0, p))
             timing["retrieval_ms_single"] = 1e3 * _median_time(lambda: single(idx0, q0, p))

@@ -16,6 +16,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ragnav_jax.memory.types import DualBasisMemory, MemoryBank, MemoryMeta
+from ragnav_jax.pytrees import stack, take
 from ragnav_jax.retrieval.score import RetrievalIndex
 from ragnav_jax.world.scene import Scene
 
@@ -175,7 +176,6 @@ def count_instances(meta: MemoryMeta, scene: Scene, max_slots: int) -> int:
 
 def build_bank_index(bank: MemoryBank, scenes: Sequence[Scene], embedder, max_slots: int | None = None):
     """RetrievalIndex for every scene of a bank, stacked with a leading scene axis (B, ...)."""
-    import jax
 
     by_name = {s.name: s for s in scenes}
     missing = [m.scene for m in bank.metas if m.scene not in by_name]
@@ -191,8 +191,8 @@ def build_bank_index(bank: MemoryBank, scenes: Sequence[Scene], embedder, max_sl
     max_inst = max(count_instances(m, by_name[m.scene], max_slots) for m in bank.metas)
     out, metas = [], []
     for b, meta in enumerate(bank.metas):
-        mem = jax.tree.map(lambda x, b=b: x[b], bank.memory)
+        mem = take(bank.memory, b)
         idx, im = build_scene_index(mem, meta, by_name[meta.scene], embedder, max_slots, max_degree, max_inst)
         out.append(idx)
         metas.append(im)
-    return jax.tree.map(lambda *xs: jnp.stack(xs), *out), tuple(metas)
+    return stack(out), tuple(metas)
