@@ -79,9 +79,9 @@ def ablation_params(base: RetrievalParams, variant: str) -> RetrievalParams:
 
 
 def stack_params(ps: list[RetrievalParams]) -> RetrievalParams:
-    """A leading grid axis over several parameter sets."""
-    import jax
+    """A leading grid axis over several parameter sets (stacked on the host: no compilation per field)."""
+    from ragnav_jax.pytrees import stack
 
-    return jax.tree.map(lambda *xs: jnp.stack(xs), *ps)
+    return stack(ps)
 
 

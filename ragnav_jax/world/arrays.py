@@ -140,7 +140,7 @@ def stack_scenes(scenes: Sequence[Scene], sizes: PadSizes | None = None) -> tupl
 
 def scene_arrays(scene: Scene, sizes: PadSizes | None = None) -> tuple[SceneArrays, SceneIndex]:
     """One scene without a batch axis."""
-    import jax
+    from ragnav_jax.pytrees import take
 
     batched, index = stack_scenes([scene], sizes)
-    return jax.tree.map(lambda x: x[0], batched), index
+    return take(batched, 0), index
