@@ -93,3 +93,22 @@ def test_apply_overrides_does_not_mutate_input():
 def test_world_config_checks_ranges():
     with pytest.raises(ConfigError, match="min_objects"):
         WorldConfig(min_objects=50, max_objects=10)
+
+
+def test_retrieval_defaults_sweep_axes_and_tunables_name_retrieval_params_fields():
+    """Retrieval defaults are written once (RetrievalConfig); every sweep axis but lam and every tunable is a
+    RetrievalParams field, so a new hyperparameter cannot be half-added."""
+    import dataclasses
+
+    import numpy as np
+
+    from ragnav_jax.config import TUNABLE, RetrievalConfig, SweepAxes
+    from ragnav_jax.retrieval.params import DEFAULTS, FLAGS, INT_FIELDS, RetrievalParams, params_from_config
+
+    fields = [f.name for f in dataclasses.fields(RetrievalParams)]
+    assert list(DEFAULTS) == fields
+    assert {f.name for f in dataclasses.fields(RetrievalConfig)} - {"method"} == set(fields) - set(FLAGS)
+    assert {f.name for f in dataclasses.fields(SweepAxes)} - {"lam"} <= set(fields)
+    assert set(TUNABLE) <= set(fields) - set(INT_FIELDS) - set(FLAGS)
+    p = params_from_config(RetrievalConfig(sigma=3.5, top_k=4))
+    assert float(p.sigma) == 3.5 and int(p.top_k) == 4 and p.eta == np.float32(RetrievalConfig().eta)

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import jax.numpy as jnp
 from flax import struct
+
+from ragnav_jax.config import RetrievalConfig
 
 
 @struct.dataclass
@@ -48,11 +52,11 @@ class RetrievalParams:
 
 
 INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
-DEFAULTS = dict(
-    sigma=2.0, eta=0.3, top_k=8, hops=2, boost_hops=1, beam=32, anchor_threshold=0.45, boost_threshold=0.45,
-    w_slot=0.7, match_threshold=0.45, sigma_loc=1.5, sigma_rel=3.0, w_loc=1.0, w_sensor=1.0, w_room=1.0, tau_room=0.05, forest_lock=0.0,
-    use_forest=1.0, use_topology=1.0, use_spatial=1.0, use_boost=1.0,
-)
+# The hyperparameters' defaults are written once, in the config section (config.RetrievalConfig); the
+# ablation flags are on unless an ablation turns one off.
+FLAGS = ("use_forest", "use_topology", "use_spatial", "use_boost")
+DEFAULTS = {**{f.name: f.default for f in dataclasses.fields(RetrievalConfig) if f.name != "method"},
+            **dict.fromkeys(FLAGS, 1.0)}
 # Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).
 MAX_K = 16
 MAX_HOPS = 3
