@@ -512,3 +512,33 @@ def test_approach_stops_where_the_robot_can_get(grid_graphs, setup, apartment):
             checked += 1
             assert comp.get(cell(stop)) == comp[start], (start, o.id)
     assert checked >= 100
+
+
+def test_a_new_episode_count_in_the_same_slot_bucket_compiles_nothing(setup, apartment):
+    """Issue 19's guard on the current loop: once warm, evaluating another number of episodes compiles no
+    XLA program as long as each scene's subgoal slots fall in the same power-of-two bucket (and the
+    executor's batch is full)."""
+    import dataclasses
+
+    from jax import monitoring
+
+    cfg, bank, streams, emb, ex = setup
+    base = load_episodes(EPISODES, [apartment])
+    many = [dataclasses.replace(e, id=f"{e.id}-{k}") for k in range(6) for e in base]
+    compiles = []
+
+    def on(event, dur, **kw):
+        if "backend_compile" in event:
+            compiles.append(event)
+
+    monitoring.register_event_duration_secs_listener(on)
+    counts, slots = [], []
+    for n in (len(many), len(many) - 4):  # 36 and 32 episodes: one slot bucket, full batches of 8 only
+        compiles.clear()
+        cands_rows, _ = evaluate_navigation(bank, [apartment], many[:n], emb, cfg, "ragnav", streams=streams,
+                                            executor=ex)
+        counts.append(len(compiles))
+        slots.append(sum(len(r["subgoal_status"]) for r in cands_rows))
+    compiles.clear()
+    assert counts[1] == 0, counts
+    assert slots[1] < slots[0] and (slots[1] - 1).bit_length() == (slots[0] - 1).bit_length()  # one bucket

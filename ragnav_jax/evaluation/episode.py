@@ -281,7 +281,8 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
     if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
         p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
-        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True)
+        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True,
+                                     bucket_slots=True)
         timing["embed_ms"] = bmeta.embed_ms
         rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
         name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used

@@ -125,12 +125,13 @@ def goal_items(episodes: Sequence[Episode], ground: Callable | None = None, ever
 def prepare_batch(
     bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder,
     index_and_metas: tuple | None = None, modalities: Sequence[str] | None = None, ground: Callable | None = None,
-    every_subgoal: bool = False,
+    every_subgoal: bool = False, bucket_slots: bool = False,
 ) -> tuple[RetrievalBatch | None, BatchMeta]:
     """Parses, embeds and groups the episodes' subgoals by scene (host side, once per episodes file).
 
     index_and_metas: a prebuilt build_bank_index(bank, scenes, embedder) to reuse. ground, every_subgoal: as in
-    goal_items.
+    goal_items. bucket_slots: pad the subgoal slots per scene (Q) to a power of two (masked), so evaluations
+    of different episode counts share the scoring kernel's compilation.
     Returns (None, meta) when no instruction yields a subgoal.
     """
     names = list(bank.names)
@@ -157,6 +158,8 @@ def prepare_batch(
     for pos, (i, it) in enumerate(live):
         per_scene[names.index(it[0].scene)].append((pos, i))
     B, Q, N = len(names), max(len(v) for v in per_scene.values()), int(index.node_mask.shape[1])
+    if bucket_slots:
+        Q = 1 << (Q - 1).bit_length()
     take = np.zeros((B, Q), np.int32)
     qmask = np.zeros((B, Q), bool)
     truth = np.zeros((B, Q, N), bool)
