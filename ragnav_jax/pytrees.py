@@ -20,7 +20,7 @@ import numpy as np
 
 def take(tree, index):
     """Every leaf indexed by `index` (an int, a slice, a tuple or an integer/boolean array), on the host."""
-    index = jax.tree.map(np.asarray, index) if isinstance(index, jax.Array) else index
+    index = np.asarray(index) if isinstance(index, jax.Array) else index
     return jax.tree.map(lambda x: jax.device_put(np.asarray(np.asarray(x)[index])), tree)
 
 

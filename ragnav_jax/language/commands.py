@@ -143,6 +143,7 @@ def cmd_fit_tagger(args, cfg) -> int:
         TRAIN_SPLITS,
         FitSettings,
         InstructionTagger,
+        check_splits,
         fit_conf,
         fit_tagger,
         save_tagger,
@@ -151,9 +152,7 @@ def cmd_fit_tagger(args, cfg) -> int:
 
     out = Path(args.out)
     splits = tuple(s.strip() for s in args.splits.split(",")) if args.splits else TRAIN_SPLITS
-    bad = [s for s in splits if s not in TRAIN_SPLITS]
-    if bad:
-        raise UserError(f"--splits: {bad[0]!r} is not a training template set ({', '.join(TRAIN_SPLITS)})")
+    check_splits(splits)  # before the run folder is made
     refuse_overwrite([out / "tagger.npz"], args.force)
     init_run(out, cfg, "fit-tagger")
     settings = FitSettings(scenes=args.scenes, seed=args.seed, lora=args.lora, epochs=args.epochs)

@@ -30,12 +30,11 @@ from pathlib import Path
 import jax
 import jax.numpy as jnp
 import numpy as np
-import optax
 from flax import linen as nn
 from flax import traverse_util
 
 from ragnav_jax.errors import UserError
-from ragnav_jax.memory.encoder import BertShape, MiniLM, MiniLMEmbedder
+from ragnav_jax.memory.encoder import BertShape, MiniLM, MiniLMEmbedder, _bucket
 
 TAGS = ("O", "B-T", "I-T", "B-A", "I-A")
 O, BT, IT, BA, IA = range(len(TAGS))
@@ -130,15 +129,20 @@ def filler_vocabulary(tokenizer) -> list[str]:
     return sorted(w for w in tokenizer.get_vocab() if re.fullmatch("[a-z]{3,12}", w) and w not in CLOSED_CLASS)
 
 
+def check_splits(splits: Sequence[str]) -> None:
+    """UserError unless every template set is one a tagger may learn from (never the held-out `unseen`)."""
+    bad = [s for s in splits if s not in TRAIN_SPLITS]
+    if bad:
+        raise UserError(f"tagger splits: {bad[0]!r} is not a training template set ({', '.join(TRAIN_SPLITS)})")
+
+
 def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS,
                       per_scene: tuple[int, int, int] = (10, 5, 5)) -> list[tuple[list[str], list[int]]]:
     """(words, tags) of episodes written with each template set in `splits` over `scenes` seen-split houses."""
     from ragnav_jax.evaluation.fitting import _seen_scenes
     from ragnav_jax.language.episodes import generate_episodes
 
-    bad = [s for s in splits if s not in TRAIN_SPLITS]
-    if bad:
-        raise UserError(f"tagger splits: {bad[0]!r} is not a training template set ({', '.join(TRAIN_SPLITS)})")
+    check_splits(splits)
     houses = _seen_scenes(cfg, scenes, seed)
     out = []
     for split in splits:
@@ -199,9 +203,11 @@ def encode_words(tokenizer, wordlists: Sequence[Sequence[str]]) -> tuple[np.ndar
     return ids, first
 
 
+LENGTHS = (32, 64, 96, MAX_TOKENS)  # token-length buckets of the jitted batches
+
+
 def _length(ids: np.ndarray) -> int:
-    n = int((ids > 0).sum(1).max())
-    return next(b for b in (32, 64, 96, MAX_TOKENS) if n <= b)
+    return _bucket(int((ids > 0).sum(1).max()), LENGTHS)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -220,6 +226,8 @@ class FitSettings:
 def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str] = TRAIN_SPLITS,
                progress: bool = False) -> tuple[dict, dict]:
     """Trains the adapters and the head; returns (trained flat params, metadata for the fitted file)."""
+    import optax
+
     base = MiniLMEmbedder()
     rng = np.random.default_rng(settings.seed)
     examples = training_examples(cfg, settings.scenes, settings.seed, splits)
