@@ -181,7 +181,7 @@ def test_tagged_reading_reads_each_instruction_once_and_hands_on_to_grounding():
     assert hook.dropped == {"e0": ("suits you", "fridge")} and hook.added == {}
 
 
-def test_fitted_confidence_is_the_smallest_that_changes_no_correct_parse():
+def test_fitted_confidence_is_the_smallest_that_changes_at_most_the_allowed_share():
     from ragnav_jax.language.tagger import CONF_GRID, fit_conf
 
     # a tagger sure of nothing but O: every parsed goal is a remark to it, at any confidence below p

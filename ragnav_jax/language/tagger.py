@@ -377,8 +377,8 @@ class InstructionTagger:
 # Reconciling the parse with the tagger
 
 CONF_GRID = (0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
-CONF_CHANGES = 0.0  # share of correct parses the fitted confidence may change (none: a house of unseen
-# words makes the tagger less sure, so a share allowed on seen houses grows on new ones)
+CONF_CHANGES = 0.005  # share of correct parses the fitted confidence may change (set before any unseen-split
+# measurement; a stricter 0 chosen after seeing unseen-house results was reverted)
 
 
 def fit_conf(tagger: InstructionTagger, cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS) -> dict:
