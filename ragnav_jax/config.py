@@ -471,6 +471,8 @@ class EvalConfig:
     # the best of the nodes they dropped, so a rejected region or anchor does not end the goal (see docs)
     closest_view: bool = True  # RAGNav's legs end at the key pose that recorded the retrieved instance from
     # closest, not at the best-scoring one (see README)
+    fallback: bool = True  # candidates and search run out: approach and declare the object seen for the goal that
+    # fails fewest parts of its check (`Verifier.misfits`; the name must fit), rather than give the goal up (README)
     search_nodes: int = 4  # candidates run out: key poses searched where the instruction puts the goal, its room
     # or coordinate hint (0 = none; evaluation/search.py)
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,

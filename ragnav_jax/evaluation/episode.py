@@ -444,6 +444,9 @@ class EpisodeState:
     expl_t: int = 0  # ETPNav-style: exploration record reached
     skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
     looked: set = dataclasses.field(default_factory=set)  # (goal, node): key poses looked around at for the goal
+    backup: dict = dataclasses.field(default_factory=dict)  # goal -> (parts failed, object): of the objects seen
+    # for the goal, the first that fails fewest parts of its check (eval.fallback)
+    fell_back: set = dataclasses.field(default_factory=set)  # goals the fallback was taken for
     penetration: float = 0.0
     planned: list = dataclasses.field(default_factory=list)  # the first plan's order
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
@@ -477,6 +480,7 @@ class Loop:
         obs = np.asarray(bank.memory.obs_object)
         self.known = [sorted({int(x) for x in obs[b][self.mask[b]].ravel() if x >= 0}) for b in range(obs.shape[0])]
         self.verdicts: list = []  # [e][g] -> (O,) bool: the verifier's check of every scene object (verify.py)
+        self.misfits: list = []  # [e][g] -> (O,) float: parts of the check each object fails (eval.fallback)
         self.search: list = []  # [e][g] -> key poses to search when the candidates run out (search.py)
 
     # -- helpers
@@ -663,12 +667,22 @@ class Loop:
         v = self.verdicts[st.e][g]
         return [int(o) for o in objects if o < len(v) and v[o]]
 
+    def keep_backup(self, st: EpisodeState, g: int, visible: np.ndarray, near: np.ndarray) -> None:
+        """eval.fallback: remembers the visible object that fails fewest parts of goal g's check (the nearest to
+        `near` (2,) of those), unless one seen earlier fails as few."""
+        m = self.misfits[st.e][g]
+        objs = self.scenes[st.ep.scene].objects
+        seen = [(float(m[o]), box_distance(objs[o], near), int(o)) for o in np.flatnonzero(visible)
+                if o < len(m) and np.isfinite(m[o]) and (g, int(o)) not in st.skip]
+        if seen and (g not in st.backup or min(seen)[0] < st.backup[g][0]):
+            st.backup[g] = (min(seen)[0], min(seen)[2])
+
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
         if st.trace is not None:
             st.trace["rejections"].append({"goal": g, "candidate": st.cptr[g], "why": why, "leg": len(st.legs) - 1})
         st.cptr[g] += 1
         st.rejected[g] += 1
-        if self.current(st, g) is None and self.search_next(st, g) is None:
+        if self.current(st, g) is None and self.search_next(st, g) is None and g not in st.backup:
             st.status[g] = f"failed:{why}"
             st.remaining.remove(g)
         self.replan(st)
@@ -720,6 +734,10 @@ class Loop:
             node, kind = self.current(st, g), "nav"
             if node is None:
                 node, kind = self.search_next(st, g), "search"
+            if node is None and g in st.backup:  # the fallback: the object seen that fits the goal best
+                o = st.backup.pop(g)[1]
+                st.fell_back.add(g)
+                return ("approach", g, o, self.approach_points(st, o, pose))
             if node is None:
                 st.status[g] = "failed:searched" if any(k == g for k, _ in st.looked) else "failed:no_candidate"
                 st.remaining.remove(g)
@@ -744,10 +762,15 @@ class Loop:
             raise UserError(f"etpnav needs the exploration stream of scene '{st.ep.scene}' (RUN/explore/streams)")
         T = len(stream.t)
 
-        key = (st.e, g)
+        fell = g in st.fell_back
+        key = (st.e, g, fell)
         if key not in self._seen:  # records where some visible object passes the check, and those objects
+            table = self.verdicts[st.e][g]
+            if fell:  # the fallback: the objects the exploration saw that fail fewest parts of the check
+                m = np.where(stream.visible.any(0)[: len(table)], self.misfits[st.e][g], np.inf)
+                table = np.isfinite(m) & (m == m.min())
             cand = np.zeros(stream.visible.shape[1], bool)
-            cand[: len(self.verdicts[st.e][g])] = self.verdicts[st.e][g]
+            cand[: len(table)] = table
             self._seen[key] = {int(r): [int(i) for i in np.flatnonzero(stream.visible[r] & cand)]
                                for r in np.flatnonzero(stream.visible[:, cand].any(1))}
 
@@ -769,6 +792,9 @@ class Loop:
                 return ("explore", g, (r, o), self.thin(stream.pose[st.expl_t : r + 1, :2]))
         if st.expl_t < T - 1:
             return ("explore", g, (T - 1, None), self.thin(stream.pose[st.expl_t :, :2]))
+        if self.cfg.eval.fallback and not fell:  # everything explored: the object seen that fits the goal best
+            st.fell_back.add(g)
+            return self.etp_leg(st, g, pose)
         st.status[g] = "failed:not_observed"
         st.remaining.remove(g)
         return self.next_leg(st, pose)
@@ -871,6 +897,9 @@ class Loop:
             ok = [o for o in ok if (g, o) not in st.skip]
             if kind != "closer":
                 st.looked.add((g, payload))
+            est = self.estimate(st, g) if self.spec.retrieval != "oracle" and kind != "search" else None
+            if not ok and self.cfg.eval.fallback and g not in st.fell_back:
+                self.keep_backup(st, g, visible, pose[:2] if est is None else est)
             if kind == "search":  # the nearest object that passes, else the next key pose (next_leg)
                 if ok:
                     o = min(ok, key=lambda i: box_distance(sc.objects[i], pose[:2]))
@@ -878,7 +907,6 @@ class Loop:
                 else:
                     st.leg = None
                 return
-            est = self.estimate(st, g) if self.spec.retrieval != "oracle" else None
             if not ok and kind == "closer" and est is not None:
                 # Still out of sight from near it (occluded, or small): the memory recorded the instance,
                 # so it passes the same check on the record and is approached at its estimated position.
@@ -929,7 +957,8 @@ class Loop:
                 if j is not None:
                     st.found[j] = True
                 st.declarations.append({"goal": g, "truth": j, "object": obj.id, "correct": j is not None,
-                                        "step": st.steps + st.look_steps, "xy": [round(float(x), 3) for x in pose[:2]]})
+                                        "step": st.steps + st.look_steps, "xy": [round(float(x), 3) for x in pose[:2]],
+                                        **({"fallback": True} if g in st.fell_back else {})})
                 st.status[g] = "found" if j is not None else "wrong"
                 st.remaining.remove(g)
             else:
@@ -972,6 +1001,8 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     views = memory_views(verifier, bank, scenes) if spec.retrieval != "oracle" else {}
     if spec.retrieval != "oracle":  # the reflection's check, one verdict per (episode, goal, object)
         loop.verdicts = verdict_table(verifier, views, episodes, cands.subgoals)
+        if cfg.eval.fallback:
+            loop.misfits = verdict_table(verifier, views, episodes, cands.subgoals, graded=True)
     if spec.search and cfg.eval.search_nodes:
         loop.search = search_table(verifier, views, bank, episodes, cands.subgoals, cfg.eval.search_nodes)
     cands.timing["verify_s"] = time.perf_counter() - t1

@@ -293,6 +293,23 @@ class Verifier:
             ok = self._constrained(view, sg, ps, rest & self.best_named(sg.target.head, names, rest, pool))
         return ok
 
+    def misfits(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
+        """(O,) float: how many parts of subgoal sg each scene object fails, every attribute, relation, sensor
+        constraint, coordinate hint and room checked alone with the name (`verdicts`); inf where the name does
+        not fit (nor does a sensor part's, which may name by the best fit: `verdicts`). The reflection's
+        fallback (`eval.fallback`) declares the object seen for a goal that fails fewest once every candidate
+        is rejected: the one that fits the instruction best where no object fits all of it."""
+        t = dataclasses.replace(sg.target, attributes=(), relations=())
+        bare = dataclasses.replace(sg, target=t, room=None, location=None, sensors=())
+        sensor = [dataclasses.replace(bare, sensors=(c,)) for c in sg.sensors]
+        parts = sensor + [dataclasses.replace(bare, target=dataclasses.replace(t, attributes=(a,))) for a in sg.target.attributes]
+        parts += [dataclasses.replace(bare, target=dataclasses.replace(t, relations=(r,))) for r in sg.target.relations]
+        parts += [dataclasses.replace(bare, location=sg.location)] if sg.location is not None else []
+        parts += [dataclasses.replace(bare, room=sg.room)] if sg.room is not None else []
+        ok = [self.verdicts(view, p, ps) for p in parts]
+        named = np.logical_or.reduce([self.verdicts(view, bare, ps)] + ok[: len(sensor)])
+        return np.where(named, sum((~k).astype(np.float32) for k in ok) if ok else 0.0, np.inf).astype(np.float32)
+
     def best_named(self, head: str, names: Sequence[set[str]], among: np.ndarray, pool: Sequence[int]) -> np.ndarray:
         """(O,) bool: objects whose best name fits the head at least as well as that of every recorded object
         of `among` ((O,) bool)."""
@@ -455,9 +472,12 @@ def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str,
     return views
 
 
-def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, subgoals) -> list[list[np.ndarray]]:
+def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, subgoals,
+                  graded: bool = False) -> list[list[np.ndarray]]:
     """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
-    episode that did not parse). Perception noise is seeded by (cfg.seed, episode id)."""
+    episode that did not parse); graded: (O,) float parts failed instead (`Verifier.misfits`). Perception
+    noise is seeded by (cfg.seed, episode id)."""
+    check = verifier.misfits if graded else verifier.verdicts
     out = []
     for ep, sgs in zip(episodes, subgoals):
         if not sgs:
@@ -465,5 +485,5 @@ def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, sub
             continue
         view = views[ep.scene]
         ps = verifier.perceptions_of(view.scene, ep.id)
-        out.append([verifier.verdicts(view, sg, ps) for sg in sgs])
+        out.append([check(view, sg, ps) for sg in sgs])
     return out
