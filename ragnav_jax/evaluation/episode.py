@@ -941,6 +941,10 @@ class Loop:
                     return
                 st.expl_t = r
                 st.look_steps += self.look_cost
+                if o is None and self.cfg.eval.fallback and g not in st.fell_back:
+                    st.fell_back.add(g)  # everything explored: etp_leg goes back to what fits the goal best
+                    st.leg = None
+                    return
                 if o is None:
                     st.status[g] = "failed:not_observed"
                     st.remaining.remove(g)
