@@ -251,6 +251,29 @@ def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartmen
     assert st.status == ["failed:not_confirmed"] and st.remaining == []
 
 
+def test_fallback_declares_what_fits_the_goal_best(setup, apartment):
+    """Instructions with one wrong detail (no bed stands by the fridge; the desk is in the study): no object
+    passes the whole check. Without the fallback the goal is given up once the candidates and search stops
+    are spent; with it (eval.fallback) the robot declares the object seen for the goal that fails fewest parts
+    of the check, for the map-based methods and the ETPNav-style one alike. A goal nothing is named after
+    (the grand piano) stays a failure."""
+    cfg, bank, streams, emb, ex = setup
+    eps = [Episode(f"fb{i}", apartment.name, text, goals, "text", "strict") for i, (text, goals) in enumerate([
+        ("Go to the fridge next to the bed.", ("fridge_1",)), ("Go to the desk in the kitchen.", ("desk_1",)),
+        ("Go to the grand piano, then the sofa.", ("sofa_1",))])]
+    for m in ("ragnav", "etpnav"):
+        runs = {}
+        for fb in (False, True):
+            c = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, fallback=fb))
+            runs[fb] = evaluate_navigation(bank, [apartment], eps, emb, c, m, streams=streams, executor=ex)[0]
+        off, on = runs[False], runs[True]
+        assert [r["goal_status"][0] for r in on[:2]] == ["found", "found"], m
+        assert all(r["goal_status"][0].startswith("failed") and not r["declarations"] for r in off[:2]), m
+        assert all(d["fallback"] for r in on[:2] for d in r["declarations"])
+        assert on[2]["subgoal_status"][0].startswith("failed") and on[2]["success"]  # the piano: nothing declared
+        assert not any(d.get("fallback") for d in on[2]["declarations"])
+
+
 def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):
     from ragnav_jax.evaluation.plot import draw_episode, save_episode_plot
 

@@ -193,6 +193,29 @@ def test_nested_relations_pick_the_anchor(minilm, apartment):
     assert [objs[i].id for i in np.flatnonzero(v.verdicts(view, sg, ps))] == ["workbench_1", "workbench_2"]
 
 
+def test_misfits_count_the_parts_each_object_fails(minilm, apartment):
+    """Verifier.misfits checks every part of a subgoal alone with the name: an object passes the whole check
+    exactly where it fails none (on a house whose rooms the summariser labels, without superlatives), the
+    false detail of 'the fridge next to the bed' is one part, and an object of another name is out (inf)."""
+    v, _ = minilm
+    objs = apartment.objects
+    ids = [o.id for o in objs]
+    view = v.scene_view(apartment, list(range(len(objs))), {i: [o.category] for i, o in enumerate(objs)})
+    ps = v.perceptions_of(apartment, "misfits")
+    for text in ("Go to the fridge.", "Go to the white fridge in the kitchen next to the coffee machine.",
+                 "Go to the fridge next to the bed.", "Go to the potted plant in the study.",
+                 "Go to the white bed in the kitchen near the bedside table.", "Go to the radiator at (2.5, 5.2).",
+                 "Go to the floor lamp whose temperature is above 30 degrees."):
+        sg = parse_instruction(text).subgoals[0]
+        m = v.misfits(view, sg, ps)
+        assert np.array_equal(m == 0, v.verdicts(view, sg, ps)), text
+        assert np.isinf(m[ids.index("sofa_1")]), text
+    m = v.misfits(view, parse_instruction("Go to the white bed in the kitchen near the bedside table.").subgoals[0], ps)
+    assert m[ids.index("bed_1")] == 1  # white, near the bedside table, not in the kitchen
+    m = v.misfits(view, parse_instruction("Go to the potted plant in the study.").subgoals[0], ps)
+    assert (m[ids.index("plant_2")], m[ids.index("plant_1")]) == (0, 1)
+
+
 def test_a_rarely_said_name_means_what_it_was_said_of(minilm):
     from ragnav_jax.evaluation.verify import name_classes
 

@@ -22,7 +22,7 @@ from ragnav_jax.io import save_figure, write_json, write_jsonl, write_text
 # table_full: every figure of a summary and of its modality blocks
 TABLE_KEYS = ("episodes", "success_rate", "retrieval_accuracy", "spl", "progress", "ppl", "travel_distance_m", "oracle_m",
               "planned_rule1_m", "retrieval_ms", "retrieval_ms_single", "task_time_s", "sim_time_s", "total_time_s",
-              "wrong_declarations")
+              "wrong_declarations", "fallback_declarations", "fallback_correct")
 # The main table's markdown: header and number format of each CSV column (success carries its interval).
 HEADERS = {"success": "success [95% CI]", "spl": "SPL", "top1": "top-1 retrieval", "travel_m": "travel (m)",
            "time_s": "time / episode (s)"}
