@@ -64,12 +64,13 @@ def test_search_nodes_lie_where_the_instruction_puts_the_goal(hidden, apartment)
 
 def test_search_finds_what_the_memory_never_recorded(hidden, apartment):
     """The memory never saw the living room's plant; its candidates are all rejected. Searching the living
-    room's key poses finds it; without the search the goal fails."""
+    room's key poses finds it; without the search (and the fallback, which would declare the study's plant)
+    the goal fails."""
     cfg, bank, emb = hidden
     ex = make_executor([apartment], cfg)
     ep = Episode(id="search", scene=apartment.name, instruction="Go to the potted plant in the living room, then the fridge.",
                  modality="text", goals=("plant_1", "fridge_1"), order="strict")
-    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, search_nodes=0))
+    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, search_nodes=0, fallback=False))
     rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, off, "ragnav", executor=ex)
     assert not rows[0]["success"] and rows[0]["goal_status"][0] == "failed:not_confirmed"
     rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "ragnav", executor=ex)

@@ -153,8 +153,8 @@ def _block(rows: list[dict]) -> dict:
         "planned_rule2_m": _mean([r["planned_rule2_m"] for r in rows]),
         "sim_time_s": _mean([r["sim_time_s"] for r in rows]),
         "wrong_declarations": int(sum(r["wrong_declarations"] for r in rows)),
-        "fallback_declarations": sum(bool(d.get("fallback")) for r in rows for d in r["declarations"]),
-        "fallback_correct": sum(bool(d.get("fallback")) and d["correct"] for r in rows for d in r["declarations"]),
+        "fallback_declarations": sum(bool(d.get("fallback")) for r in rows for d in r.get("declarations", ())),
+        "fallback_correct": sum(bool(d.get("fallback")) and d["correct"] for r in rows for d in r.get("declarations", ())),
     }
 
 
