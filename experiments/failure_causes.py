@@ -96,9 +96,9 @@ def causes(run: Path, method: str) -> list[dict]:
                 cause = "not_in_memory"
             elif not verifier.verdicts(view, sgs[g], ps)[k]:
                 cause, detail = "check_rejects_target", "+".join(check_parts(verifier, view, sgs[g], ps, k))
-            elif spec.retrieval != "oracle" and not target_among(without_check, e, g, obj):
+            elif spec.reads and not target_among(without_check, e, g, obj):
                 cause = "retrieval_misses_target"
-            elif spec.retrieval != "oracle" and not target_among(with_check, e, g, obj):
+            elif spec.reads and not target_among(with_check, e, g, obj):
                 cause = "precheck_rules_out_target"
             elif status == "wrong":
                 cause = "check_passes_wrong_object"

@@ -84,6 +84,8 @@ class MethodSpec:
     straight: bool  # straight-line legs and Euclidean order costs (no topological map)
     optimal_order: bool  # solve the order (False: instruction order)
     search: bool = True  # candidates run out: search the key poses where the instruction puts the goal (search.py)
+    reads: bool = True  # reads the instruction and checks what it sees (False: the Oracle, which knows the goals)
+    explores: bool = False  # finds goals by replaying its exploration, with no retrieval (the ETPNav-style baseline)
 
 
 def segment_clearance_np(p: np.ndarray, q: np.ndarray, obs: dict) -> np.ndarray:
@@ -103,8 +105,8 @@ def method_spec(name: str) -> MethodSpec:
     # RAGNav here (it once drove straight lines into walls, which measured a crippled navigator, not its memory).
     # The ETPNav-style baseline explores for itself, and the Oracle knows where every goal is: neither searches.
     return {"remembr": MethodSpec(name, "remembr", False, False),
-            "etpnav": MethodSpec(name, "etpnav", False, False, search=False),
-            "oracle": MethodSpec(name, "oracle", False, True, search=False)}[name]
+            "etpnav": MethodSpec(name, "etpnav", False, False, search=False, explores=True),
+            "oracle": MethodSpec(name, "oracle", False, True, search=False, reads=False)}[name]
 
 
 def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:
@@ -263,7 +265,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     names = list(bank.names)
     by_name = {s.name: s for s in scenes}
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
-    if cfg.eval.tagger and spec.retrieval != "oracle":
+    if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
         ground = TaggedReading(tagger, episodes, conf, then=ground)
@@ -725,11 +727,11 @@ class Loop:
                 st.done, st.reason = True, st.reason or "completed"
                 return None
             g = st.remaining[0]
-            if self.spec.retrieval != "oracle" and (st.subgoals is None or g >= len(st.subgoals)):
+            if self.spec.reads and (st.subgoals is None or g >= len(st.subgoals)):
                 st.status[g] = "failed:parse"  # (the Oracle reads no instruction)
                 st.remaining.remove(g)
                 continue
-            if self.spec.retrieval == "etpnav":
+            if self.spec.explores:
                 return self.etp_leg(st, g, pose)
             node, kind = self.current(st, g), "nav"
             if node is None:
@@ -889,7 +891,7 @@ class Loop:
             else:  # stuck short of the node, or off the map: re-attach where a straight line leads
                 st.node = self.attach(st.b, pose[:2])
             st.look_steps += self.look_cost
-            if self.spec.retrieval == "oracle":  # knows the true goal position: no check needed
+            if not self.spec.reads:  # knows the true goal position: no check needed
                 gobj = self.goal_object(st, g)
                 ok = [sc.objects.index(gobj)] if gobj is not None else []
             else:
@@ -897,7 +899,7 @@ class Loop:
             ok = [o for o in ok if (g, o) not in st.skip]
             if kind != "closer":
                 st.looked.add((g, payload))
-            est = self.estimate(st, g) if self.spec.retrieval != "oracle" and kind != "search" else None
+            est = self.estimate(st, g) if self.spec.reads and kind != "search" else None
             if not ok and self.cfg.eval.fallback and g not in st.fell_back:
                 self.keep_backup(st, g, visible, pose[:2] if est is None else est)
             if kind == "search":  # the nearest object that passes, else the next key pose (next_leg)
@@ -967,7 +969,7 @@ class Loop:
                 st.remaining.remove(g)
             else:
                 st.skip.add((g, payload))
-                if self.spec.retrieval == "etpnav":
+                if self.spec.explores:
                     return
                 self.reject(st, g, "blocked")
 
@@ -1002,8 +1004,8 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
     oracle = retrieve_candidates(method_spec("oracle"), bank, scenes, episodes, embedder, cfg) if method != "oracle" else cands
     t1 = time.perf_counter()
-    views = memory_views(verifier, bank, scenes) if spec.retrieval != "oracle" else {}
-    if spec.retrieval != "oracle":  # the reflection's check, one verdict per (episode, goal, object)
+    views = memory_views(verifier, bank, scenes) if spec.reads else {}
+    if spec.reads:  # the reflection's check, one verdict per (episode, goal, object)
         loop.verdicts = verdict_table(verifier, views, episodes, cands.subgoals)
         if cfg.eval.fallback:
             loop.misfits = verdict_table(verifier, views, episodes, cands.subgoals, graded=True)
@@ -1016,13 +1018,13 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
         sc = loop.scenes[ep.scene]
         # the goals run: the subgoals read from the instruction (the Oracle, and an unread instruction: the true ones)
         sgs = cands.subgoals[e]
-        G = len(ep.goals) if spec.retrieval == "oracle" or sgs is None else len(sgs)
-        strict = ep.order == "strict" if spec.retrieval == "oracle" or sgs is None else parsed_order(ep.instruction) == "strict"
+        G = len(ep.goals) if not spec.reads or sgs is None else len(sgs)
+        strict = ep.order == "strict" if not spec.reads or sgs is None else parsed_order(ep.instruction) == "strict"
         start = loop.nearest(b, sc.start.position[:2])
         ests = ((cands.est[e] if cands.est else []) + [[]] * G)[:G]
         st = EpisodeState(e, ep, b, ex.names.index(ep.scene), sgs, (cands.nodes[e] + [[]] * G)[:G], ests, [0] * G,
                           [0] * G, list(range(G)), start, ["pending"] * G, strict, [False] * len(ep.goals))
-        if spec.retrieval != "etpnav":
+        if not spec.explores:
             loop.replan(st)
         st.planned = list(st.remaining)
         st.trace = trace_of(loop, st, cands) if ep.id in trace else None

@@ -97,7 +97,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
     obs = np.asarray(loop.bank.memory.obs_object[st.b])
     ids = [o.id for o in sc.objects]
     top1 = []
-    if loop.spec.retrieval == "etpnav":
+    if loop.spec.explores:
         top1 = [None] * G
     else:
         for g in range(G):
@@ -106,7 +106,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
             top1.append(t is not None and gidx >= 0 and gidx in set(obs[t].tolist()))
     first = [cands.nodes[st.e][g][0] if g < len(cands.nodes[st.e]) and cands.nodes[st.e][g] else None for g in st.planned]
     start = loop.nearest(st.b, sc.start.position[:2])
-    r1, r2 = _route(loop, st.b, start, first) if loop.spec.retrieval != "etpnav" else (float("nan"), float("nan"))
+    r1, r2 = _route(loop, st.b, start, first) if not loop.spec.explores else (float("nan"), float("nan"))
     fails = [s.split(":", 1)[1] for s in st.status if s.startswith("failed")]
     reason = "success" if success else (
         "wrong_declaration" if wrong else
