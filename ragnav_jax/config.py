@@ -461,7 +461,8 @@ class EvalConfig:
     stall_steps: int = 40  # control steps without progress (< 2 mm each) that end a leg as stuck
     look_headings: int = 8  # camera headings of the look-around on arrival (a turn in place)
     path_points: int = 128  # static waypoint buffer per leg
-    strict_lam: float = 1.0e4  # planning lambda for strict episodes (metres per order inversion)
+    strict_lam: float = 1.0e4  # order penalty of the shortest route SPL measures a strict episode against (metres
+    # per order inversion; the loop itself keeps a strict instruction's order)
     batch_size: int = 512  # episodes executed together in one vmapped call
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
