@@ -24,7 +24,8 @@ def draw_episode(scene: Scene, row: dict, ax=None, title: str | None = None):
 
     Lines: the waypoints each leg drove (colour by kind); dots: where the simulation ended each leg
     (hollow: the leg stopped short, stuck or out of steps); stars: the goals (numbered in the
-    instruction's order); crosses: declarations (green correct, red wrong).
+    instruction's order); crosses: declarations (green correct, red wrong; ringed: made by the reflection's
+    fallback, `eval.fallback`).
     """
     if "legs" not in row:
         raise ValueError(f"episode {row.get('episode')}: no legs recorded (evaluate with eval.record_legs=true)")
@@ -46,7 +47,10 @@ def draw_episode(scene: Scene, row: dict, ax=None, title: str | None = None):
             ax.plot(o.position[0], o.position[1], "*", ms=11, color="gold", mec="k", mew=0.6)
             ax.annotate(str(g + 1), (o.position[0], o.position[1]), fontsize=7, xytext=(4, 4), textcoords="offset points")
     for d in row["declarations"]:
-        ax.plot(*d["xy"], "x", ms=8, mew=2, color="tab:green" if d["correct"] else "tab:red")
+        col = "tab:green" if d["correct"] else "tab:red"
+        ax.plot(*d["xy"], "x", ms=8, mew=2, color=col)
+        if d.get("fallback"):
+            ax.plot(*d["xy"], "o", ms=13, mew=1.2, mfc="none", color=col)
     ax.set_title(title or f"{row['episode']} ({row['method']}): {row['reason']}", fontsize=8)
     ax.legend(fontsize=6, loc="lower right")
     return ax

@@ -194,7 +194,7 @@ def _draw_frame(ax, panel, fr: dict, row: dict, objs: dict, instruction: str | N
     state = {}
     for d in fr["declarations"]:
         col = "tab:green" if d["correct"] else "tab:red"
-        state[d["goal"]] = "FOUND" if d["correct"] else "FOUND (wrong object)"
+        state[d["goal"]] = ("FOUND" if d["correct"] else "FOUND (wrong object)") + (" by the fallback" if d.get("fallback") else "")
         art += ax.plot(*d["xy"], "P" if d["correct"] else "X", ms=11, mec="k", mew=0.6, color=col, zorder=10)
         art.append(ax.annotate(f"FOUND {d['object']}", d["xy"], fontsize=7, weight="bold", xytext=(6, 6),
                                textcoords="offset points", color=col, zorder=10))
