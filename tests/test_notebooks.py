@@ -13,7 +13,7 @@ NOTEBOOKS = sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("*.i
 
 
 def test_notebooks_exist_and_are_stripped():
-    assert {p.stem for p in NOTEBOOKS} >= {"memory_explorer", "sweeps", "ablations", "navigation"}
+    assert {p.stem for p in NOTEBOOKS} >= {"memory_explorer", "sweeps", "ablations", "navigation", "generalisation"}
     for p in NOTEBOOKS:
         nb = nbformat.read(p, as_version=4)
         for cell in nb.cells:
