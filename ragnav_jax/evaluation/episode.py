@@ -676,8 +676,9 @@ class Loop:
         objs = self.scenes[st.ep.scene].objects
         seen = [(float(m[o]), box_distance(objs[o], near), int(o)) for o in np.flatnonzero(visible)
                 if o < len(m) and np.isfinite(m[o]) and (g, int(o)) not in st.skip]
-        if seen and (g not in st.backup or min(seen)[0] < st.backup[g][0]):
-            st.backup[g] = (min(seen)[0], min(seen)[2])
+        best = min(seen, default=None)
+        if best is not None and (g not in st.backup or best[0] < st.backup[g][0]):
+            st.backup[g] = (best[0], best[2])
 
     def reject(self, st: EpisodeState, g: int, why: str) -> None:
         if st.trace is not None:

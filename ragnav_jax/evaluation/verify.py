@@ -276,15 +276,17 @@ class Verifier:
         rng = np.random.default_rng(np.random.SeedSequence([int(self.seed), zlib.crc32(key.encode())]))
         return [tuple(perceive(rng, o, self.noise) for _ in range(self.looks)) for o in scene.objects]
 
-    def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
+    def verdicts(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]],
+                 names: Sequence[set[str]] | None = None) -> np.ndarray:
         """(O,) bool: each scene object, perceived as ps (its looks), passes the check for subgoal sg.
 
         A goal measured by a sensor whose head noun the house never uses ("the tool in the workshop at about
         167 degrees", where the encoder does not know a soldering station is a tool) and that no recorded
         object passes is checked by name among the objects that pass everything else: those whose names fit
-        the head best pass (`best_named`)."""
+        the head best pass (`best_named`). names: each object's names (`SceneView.names_of`), where the caller
+        has them already."""
         objs = view.scene.objects
-        names = [view.names_of(i, ps[i]) for i in range(len(objs))]
+        names = names if names is not None else [view.names_of(i, ps[i]) for i in range(len(objs))]
         named = self.target_fits(sg.target, ps, view.vocab, names, view.classes)
         ok = self._constrained(view, sg, ps, named)
         pool = list(view.known)
@@ -306,8 +308,9 @@ class Verifier:
         parts += [dataclasses.replace(bare, target=dataclasses.replace(t, relations=(r,))) for r in sg.target.relations]
         parts += [dataclasses.replace(bare, location=sg.location)] if sg.location is not None else []
         parts += [dataclasses.replace(bare, room=sg.room)] if sg.room is not None else []
-        ok = [self.verdicts(view, p, ps) for p in parts]
-        named = np.logical_or.reduce([self.verdicts(view, bare, ps)] + ok[: len(sensor)])
+        names = [view.names_of(i, ps[i]) for i in range(len(view.scene.objects))]
+        ok = [self.verdicts(view, p, ps, names) for p in parts]
+        named = np.logical_or.reduce([self.verdicts(view, bare, ps, names)] + ok[: len(sensor)])
         return np.where(named, sum((~k).astype(np.float32) for k in ok) if ok else 0.0, np.inf).astype(np.float32)
 
     def best_named(self, head: str, names: Sequence[set[str]], among: np.ndarray, pool: Sequence[int]) -> np.ndarray:
