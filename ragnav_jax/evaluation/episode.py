@@ -444,7 +444,8 @@ class EpisodeState:
     reason: str = ""
     leg: tuple | None = None  # (kind, goal, payload)
     expl_t: int = 0  # ETPNav-style: exploration record reached
-    skip: set = dataclasses.field(default_factory=set)  # ETPNav-style: objects rejected per goal (g, obj)
+    skip: set = dataclasses.field(default_factory=set)  # (goal, object) ruled out: rejected on approach, or
+    # declared for another goal
     looked: set = dataclasses.field(default_factory=set)  # (goal, node): key poses looked around at for the goal
     backup: dict = dataclasses.field(default_factory=dict)  # goal -> (parts failed, object): of the objects seen
     # for the goal, the first that fails fewest parts of its check (eval.fallback)
@@ -968,6 +969,10 @@ class Loop:
                                         **({"fallback": True} if g in st.fell_back else {})})
                 st.status[g] = "found" if j is not None else "wrong"
                 st.remaining.remove(g)
+                for k in st.remaining:  # an object answers one goal: "both boilers" are two boilers
+                    st.skip.add((k, payload))
+                    if st.backup.get(k, (0, None))[1] == payload:
+                        del st.backup[k]
             else:
                 st.skip.add((g, payload))
                 if self.spec.explores:

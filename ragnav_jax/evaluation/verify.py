@@ -56,6 +56,7 @@ import numpy as np
 
 from ragnav_jax.errors import UserError
 from ragnav_jax.language.episodes import relation_holds, sensor_holds
+from ragnav_jax.language.lexicon import GENERIC_HEADS, SAME_STATES
 from ragnav_jax.language.types import Subgoal, Target
 from ragnav_jax.memory.captioner import CaptionNoise, canonical, describe_object, find_words
 from ragnav_jax.world.scene import Scene, SceneObject
@@ -142,8 +143,10 @@ def descriptors(p: Perceived) -> tuple[str, ...]:
 
 
 def said(attr: str, text: str) -> bool:
-    """The description states this attribute: as whole words, or a hyphenated value by its first part."""
-    return bool(find_words(attr, text)) or ("-" in attr and bool(find_words(attr.split("-")[0], text)))
+    """The description states this attribute: as whole words, a hyphenated value by its first part, or a state
+    by any phrase that says the same (`lexicon.SAME_STATES`: "running" is said by "switched on")."""
+    return (any(find_words(a, text) for a in SAME_STATES.get(attr, (attr,)))
+            or ("-" in attr and bool(find_words(attr.split("-")[0], text))))
 
 
 def attributes_seen(t: Target, looks: Sequence[Sequence[Perceived]]) -> np.ndarray:
@@ -197,6 +200,8 @@ class Verifier:
         classes: name -> the names the memory learnt mean the same (`name_classes`)."""
         heads = (classes or {}).get(head, {head})
         exact = np.array([bool(heads & set(ns)) for ns in names], bool)
+        if head in GENERIC_HEADS and head not in vocab:  # "the hottest thing in the den": any object
+            return np.ones(len(names), bool)
         if head in vocab:  # the house's own word for it (or a word its memory learnt means it): trust its naming
             return exact
         flat = sorted({n for ns in names for n in ns})

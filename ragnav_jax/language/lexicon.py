@@ -55,6 +55,18 @@ STATE_OPPOSITES: dict[str, str] = {
     "folded": "unfolded", "unfolded": "folded", "open": "closed", "closed": "open", "empty": "full", "full": "empty",
     "locked": "unlocked", "unlocked": "locked",
 }
+# States that say the same of an object, as a description may put it ("running" is what "switched on" says of a
+# dryer): a state is seen where any phrase of its class is said.
+_SAME_STATES = (
+    ("switched on", "turned on", "powered on", "running", "in use"),
+    ("switched off", "turned off", "powered off", "unplugged"),
+    ("open", "opened"),
+    ("closed", "shut"),
+    ("lit", "switched on", "turned on"),
+    ("unlit", "switched off", "turned off"),
+)
+SAME_STATES: dict[str, tuple[str, ...]] = {
+    s: tuple(dict.fromkeys(x for c in _SAME_STATES if s in c for x in c)) for c in _SAME_STATES for s in c}
 # Participle states that may follow the noun without a copula ("the lamp switched on", "the kettle unplugged")
 # or precede it hyphenated ("the switched-on lamp"); adjectives such as "open" need "that is" after a noun.
 PARTICIPLE_STATES = frozenset(
@@ -93,6 +105,8 @@ FILLER_NOUNS = frozenset(
     "instructions agenda".split()
 )
 PRONOUN_ANCHORS = frozenset("it that this them there one".split())
+# Head nouns that name no kind of object: "the hottest thing in the den" is whatever the other parts single out.
+GENERIC_HEADS = frozenset("thing object item something".split())
 
 # Relation phrases, longest first at match time; values are RELATION_TYPES.
 RELATION_PHRASES: dict[str, str] = {
@@ -444,7 +458,7 @@ TRAILING_FILLERS = (
     "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
     "thank you", "then", "for me", "if you can", "if possible", "nearby", "next", "also", "straight away",
     "right away", "as soon as possible", "asap", "at the end", "at the start", "at the beginning",
-    "of all", "of them all", "of all of them", "among them", "overall",
+    "of all", "of them all", "of all of them", "among them", "overall", "there", "over there", "in there",
     # "X comes first, then Y", "X is your last stop"
     *(f"{v} {o}" for v in ("comes", "goes", "is", "should come", "should be", "will be", "must be", "has to be")
       for o in (*ORDINAL_WORDS, "at the end", "after that", "in the middle")),

@@ -136,7 +136,10 @@ _PAIR_XY = (
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
 _LOC2 = re.compile(
     r"(?:\b(?:located|positioned|situated|placed)\s+)?(?:\b(?:at|coordinates?|coords?|position|point|location)\s+"
-    rf"|\b(?:around|near|roughly|about|approximately)\s+(?={NUM}\s*/))"
+    rf"|\b(?:around|near|roughly|about|approximately)\s+(?={NUM}\s*/)"
+    # a bare pair after a word of place: "the bean bag by 2.4, 6.2", "near 3, 4" (no unit: "near 20, 21 °C" is a reading)
+    rf"|\b(?:by|near|around|roughly|about|approximately|close\s+to|next\s+to)\s+(?={NUM}{_NUM_END}\s*,\s*{NUM}{_NUM_END}"
+    rf"(?!\s*{UNIT})))"
     r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location)\s+)?"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
     rf"(?P<x3>{NUM}){_NUM_END}{_METRES}\s*[,/|]\s*(?P<y3>{NUM}){_NUM_END}{_METRES}"
@@ -290,6 +293,7 @@ _CONNECTORS = (
 _SPLIT = re.compile(
     r"(?P<c>[,;:!?()\[\]]|\.(?!\d)|\s&\s|\s-+\s|" + _alt(_CONNECTORS)[3:-1] + r"|\bnext\b(?!\s+to\b))"
 )
+PAIR = "⟪pair⟫"  # "both boilers": the goal is asked for twice, as two objects
 _TOKEN = re.compile(r"⟪[a-z]+⟫|[^\W_]+(?:['\-][^\W_]+)*")
 SWAP_BACK = ("after", "but first", "before that")  # "X after Y": Y comes first
 APPOSITION = ("(", "[")  # "the desk (the oak one)": the bracketed phrase describes the previous goal
@@ -511,6 +515,10 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (rf"(?:(?<=^)|(?<=[\s;.]))(?:the\s+)?(?:{_ORD_ALT})\s+(?:stop|destination|goal|target|leg|waypoint|port\s+of\s+call)"
      r"\s*:", "; "),
     (r"\b(?P<w>next|first)\s+(?:up|off)\b", r"\g<w>"),
+    # "check both boilers", "both of the air purifiers", "the two lamps": two goals of that name (the marker
+    # is read by _parse_segment); "both the kiln and the loom" lists two goals already
+    (r"\b(?:both\s+(?:of\s+)?(?:the\s+|these\s+|those\s+)?|the\s+two\s+)(?P<np>(?:[a-z][\w'-]*\s+){0,2}?[a-z][\w-]*?[^s'\s]s)\b"
+     r"(?!\s*(?:and|or|'s)\b)", lambda m: f"the ⟪pair⟫ {_singular_np(m.group('np'))}"),
     (r"\b(?:both|each\s+of|all\s+of)\s+(?=the\b)", ""),  # "visit both the kiln and the loom"
     (r"\b(?P<o>order|sequence)'s\b", r"\g<o> is"),
     (r"\b(?:suits|suit)\s+you\b", "you like"),
@@ -623,10 +631,23 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"|inside|alongside|above|below|beneath|underneath|up\s+(?:on|by|near|against))\b)", "located "),
     # "the coolest-running kiln": the superlative of how it runs is the superlative.
     (rf"\b(?P<sup>{_alt(L.SUPERLATIVES)})-(?:running|reading|measuring|looking|operating)\b", r"\g<sup>"),
+    # "there's a record player on the credenza - go to it": the object a sentence introduces is the goal.
+    (r"\b(?:there's|there\s+is|there\s+should\s+be|you'll\s+find|you\s+will\s+find)\s+(?:a|an|one)\s+(?=[a-z])", "the "),
+    # "which tumble dryer is running? go to that one.": the question names the goal; the pointer adds nothing.
+    (r"(?:^|(?<=[.!?;]\s))which\s+(?P<np>(?:[a-z][\w'-]*\s+){0,3}?[a-z][\w'-]*)\s+(?P<v>is|are)\s+(?P<rest>[^?.!;]+)\?"
+     r"\s*(?:(?:please\s+)?(?:go|head|drive|get)\s+(?:over\s+)?to\s+(?:that|it|this)(?:\s+one)?\s*[.!]?)?",
+     r"the \g<np> that \g<v> \g<rest>. "),
+    # "the crib with the mustard finish", "the chair in a tweed fabric": a property noun after its value names no
+    # object; the value is the goal's attribute.
+    (r"\b(?:with|in|having)\s+(?:a|an|the|its|their)\s+(?P<w>(?:(?!(?:and|or|then)\b)[a-z][\w-]*\s+)?(?!(?:and|or|then)\b)[a-z][\w-]*)\s+(?:finish|colou?r|shade|hue"
+     r"|tone|paint|paintwork|fabric|material|upholstery|texture|pattern|style|look|trim|veneer|coating)\b"
+     r"(?!\s+(?:with|at|by|up|off|the|a|an|to|of)\b)", r"that is \g<w>"),
     (r"\bhaving\s+(?=(?:the|a|an)\b)", "with "),  # "the desk having the lamp": "having" before a noun is "with"
     # A participle or subordinate clause about the previous goal only sequences: "having reached that one,",
     # "once you've looked at it,", "after dropping by there,".
-    (rf"\b(?:having|once|when|after|upon)\b[^,.;:!?⟪()]{{0,40}}?\b{_PRON_OBJ}\s*(?=[,.;:!?]|$)", " then "),
+    # A clause that names a new goal is no such clause: "after that the bin by it" is a goal.
+    (rf"\b(?:having|once|when|after(?!\s+(?:that|this)\s+(?:the|a|an)\b)|upon)\b(?:(?!\bthe\b)[^,.;:!?⟪()]){{0,40}}?"
+     rf"\b{_PRON_OBJ}\s*(?=[,.;:!?]|$)", " then "),
     # "make the kiln your first stop, the loom your second": the ordinal says what the order says already.
     (rf"\b(?:as\s+)?your\s+(?:very\s+)?(?:{_ORD_ALT})(?:\s+(?:stop|destination|goal|target|one|port\s+of\s+call))?\b",
      " "),
@@ -668,11 +689,24 @@ _SUPER_OF = re.compile(
     r"(?P<np>(?:[a-z][\w'-]*\s+){0,3}?[a-z][\w-]*?s)\b(?!\s*(?:of|'s)\b)"
 )
 
+# "the healthier of the two peace lilies": a comparative over a group picks its extreme, the healthiest lily.
+_SUPER_FOR = {v: k for k, v in reversed(L.SUPERLATIVES.items())}
+_COMPARATIVE_OF = re.compile(
+    rf"\bthe\s+(?P<cmp>{_alt(w for w in L.COMPARATIVES if L.COMPARATIVES[w] in _SUPER_FOR)})\s+(?:one\s+)?of\s+"
+    r"(?:the|those|these|your|my|our)\s+(?:(?:two|three|four|2|3|4|pair\s+of)\s+)?"
+    r"(?P<np>(?:[a-z][\w'-]*\s+){0,3}?[a-z][\w-]*?s)\b(?!\s*(?:of|'s)\b)"
+)
+
+
+def _singular_np(np_: str) -> str:
+    return " ".join([*np_.split()[:-1], _singular(np_.split()[-1])])
+
 
 def _canonical(s: str) -> str:
     for rx, rep in _CANONICAL:
         s = rx.sub(rep, s)
-    s = _SUPER_OF.sub(lambda m: f"{m.group('sup')} {' '.join([*m.group('np').split()[:-1], _singular(m.group('np').split()[-1])])}", s)
+    s = _COMPARATIVE_OF.sub(lambda m: f"the {_SUPER_FOR[L.COMPARATIVES[m.group('cmp')]]} {_singular_np(m.group('np'))}", s)
+    s = _SUPER_OF.sub(lambda m: f"{m.group('sup')} {_singular_np(m.group('np'))}", s)
     return re.sub(r"\s+", " ", s).strip()
 
 
@@ -885,6 +919,7 @@ class _Piece:
     led: bool = False  # a verb or politeness phrase opened the segment ("visit the blue one")
     det: bool = False  # the segment (after any verb) opens with a determiner ("the iron", not "red chair")
     clause: _Node | None = None  # the noun the segment's last relative clause describes ("the bin that is full")
+    pair: bool = False  # "both boilers": two goals of that description
 
     @property
     def empty(self) -> bool:
@@ -1018,8 +1053,8 @@ def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
         if ing and len(tokens) > 1 and tokens[0].endswith("ing") and _plain_word(tokens[0]):
             tokens, changed, ing = _verb_tail(tokens[1:]), True, False
             continue
-        if tokens and tokens[0] in ("to", "towards", "toward") and len(tokens) > 1:
-            tokens, changed = tokens[1:], True
+        if tokens and tokens[0] in ("to", "towards", "toward") and (len(tokens) > 1 or n0 > len(tokens)):
+            tokens, changed = tokens[1:], True  # "drive to (3, 4)": the verb's place was cut out
         elif len(tokens) > 2 and tokens[0] in L.VERB_PARTICLES and tokens[1] in ("to", "towards", "toward"):
             tokens, changed = tokens[2:], True  # "then over to the loom"
     # An unknown verb before a determiner ("photograph the fridge", "scurry over to the fridge"): drop it.
@@ -1245,7 +1280,9 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     piece = _Piece(node=None, connector=connector, texts=[marks.restore(seg)])
     tokens = []
     for t in raw:
-        if t.startswith("⟪"):
+        if t == PAIR:
+            piece.pair = True
+        elif t.startswith("⟪"):
             if t in marks.locations:
                 piece.locations.append(marks.locations[t])
             if t in marks.sensors:
@@ -1255,6 +1292,10 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     if _sequencing_clause(tokens, raw):
         return piece  # "when you've finished there,": says only that what follows comes next
     tokens, piece.led = _strip_leaders(tokens)
+    room_end = next((k for k in range(3, min(len(tokens), 7)) if tokens[k] in ("the", "a", "an")), 0)
+    if tokens[:2] == ["in", "the"] and room_end and L.is_room_phrase(tokens[2:room_end]):
+        # "in the music room the record player on the credenza": the room comes first
+        piece.room, tokens, piece.led = _room_name(tokens[2:room_end]), tokens[room_end:], True
     tokens = _possessive_room(tokens, piece)
     tokens = _join_prenominal_states(tokens)
     piece.det = bool(tokens) and tokens[0] in L.DETERMINERS
@@ -1276,6 +1317,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             i += 1
             continue
         rtype, used, room_prep = b
+        prep = tokens[i + used - 1]
         if tokens[i] in L.RELATIVE_PRONOUNS or tokens[i] in L.RELATIVE_CONTRACTED:
             piece.clause = current  # "the desk that sits near the lamp [and has ...]": the desk's clause
         i += used
@@ -1290,6 +1332,12 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
         if not anchor or all(w in L.FILLER_NOUNS and w not in L.PRONOUN_ANCHORS for w in anchor):
             continue  # "with" before a sensor phrase, "nearby"
         node = _Node(anchor)
+        if not words and piece.led and current is top and not top.relations and prep in ("at", "to"):
+            # "start in the library at the reading lamp", "go in the den to the sofa": after the verb and its
+            # room, the place the robot goes to is the goal, not an anchor
+            words, top = anchor, node
+            current = node
+            continue
         current.relations.append((rtype, node))
         current = node
     if words and words[-1] in ("one", "ones") and (len(words) > 1 or piece.sensors or piece.locations or
@@ -1453,6 +1501,7 @@ def parse_instruction(text: str) -> TaskChain:
             "no recognisable goal in the instruction: name at least one place or object to go to, "
             "e.g. 'go to the sofa' or 'find the red chair near the desk'"
         )
+    goals = [x for g in goals for x in ((g, dataclasses.replace(g, connector="and")) if g.pair and g.node else (g,))]
     if len(goals) > MAX_SUBGOALS:
         raise ParseError(f"too many goals ({len(goals)}; at most {MAX_SUBGOALS})")
     # Reorder: "X after Y" / "X, but first Y" put Y before X; "before Y, X" puts X before Y.
@@ -1500,7 +1549,7 @@ def parse_instruction(text: str) -> TaskChain:
 # naming no object, read by its cue words. Indifference wins over emphasis ("order matters" is strict, "order
 # doesn't matter" is free).
 _ORDER_CLAUSE = re.compile(r"[^.;:!?()\[\],⟪⟫]*\b(?:order|sequence|first)\b[^.;:!?()\[\],⟪⟫]*")
-_FREE_CUES = frozenset("any anything whatever whichever no not never matter difference care mind fussy fussed bothered "
+_FREE_CUES = frozenset("any anything either whatever whichever no not never matter difference care mind fussy fussed bothered "
                        "flexible free choose pick decide optional random irrelevant unimportant up yours".split())
 _STRICT_CUES = frozenset("this that given listed as keep stick follow strict strictly exact exactly same written shown above "
                          "below important matters counts specified numbered sequence order".split())
