@@ -274,6 +274,17 @@ def test_fallback_declares_what_fits_the_goal_best(setup, apartment):
         assert not any(d.get("fallback") for d in on[2]["declarations"])
 
 
+def test_an_object_declared_for_one_goal_answers_no_other(setup, apartment):
+    """"Both potted plants" reads as two goals of one description; once a plant is declared for the first,
+    the second goes on to the other plant instead of declaring the same one again (a wrong declaration)."""
+    cfg, bank, streams, emb, ex = setup
+    eps = [Episode("both", apartment.name, "Go to both potted plants.", ("plant_1", "plant_2"), "text", "free")]
+    for m in ("ragnav", "etpnav"):
+        r = evaluate_navigation(bank, [apartment], eps, emb, cfg, m, streams=streams, executor=ex)[0][0]
+        assert r["success"] and r["goal_status"] == ["found", "found"], m
+        assert sorted(d["object"] for d in r["declarations"]) == ["plant_1", "plant_2"], m
+
+
 def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):
     from ragnav_jax.evaluation.plot import draw_episode, save_episode_plot
 

@@ -494,10 +494,14 @@ ROUNDS = sorted((Path(__file__).resolve().parent / "data").glob("round*_phrasing
 
 @pytest.mark.parametrize("path", ROUNDS, ids=[p.stem for p in ROUNDS])
 def test_later_round_constructions_agree(path):
-    """The general constructions of parser rounds 3 to 9 (list markers, arrows, time adverbs, apposition
+    """The general constructions of parser rounds 3 to 10 (list markers, arrows, time adverbs, apposition
     markers, light verbs, headings, participle clauses about the previous goal, axis, slash and brace
     coordinates, superlatives over a plural, possessive rooms, object relatives, rooms of other objects,
-    thresholds against a "mark", order said in other words, greetings and courtesies, speech transcripts, formal task notes, chat shorthand, bracketed states and rooms, remarks about the order read by their cue words) on
+    thresholds against a "mark", order said in other words, greetings and courtesies, speech transcripts,
+    formal task notes, chat shorthand, bracketed states and rooms, remarks about the order read by their cue
+    words; round 10: bare coordinate pairs after a place word, "after that the X by it", "start in the ROOM at
+    the X", "the healthier of the two Xs", property nouns ("with the walnut finish"), "both Xs" and "the two Xs"
+    as two goals, "there's a X", "which X is Y? go to that one", a room before the goal, "either order") on
     hand-written sentences with nouns no generator writes."""
     rows = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
     assert len(rows) >= 15

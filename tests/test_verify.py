@@ -29,6 +29,9 @@ def test_descriptors_and_said_read_the_captioners_words():
     assert descriptors(P("tumble dryer", "glossy tumble dryer that is switched on")) == ("glossy", "switched on")
     assert said("switched on", "lamp that is switched on") and not said("switched on", "lamp that is switched off")
     assert said("gold-framed", "mirror with a gold frame") and not said("white", "white-painted desk")
+    # a state is seen where a phrase that says the same is said; an opposite state is not it
+    assert said("running", "glossy tumble dryer that is switched on") and said("shut", "oak chest, closed")
+    assert not said("running", "glossy tumble dryer that is switched off") and not said("turned on", "lamp, unlit")
 
 
 @pytest.mark.parametrize("head,attrs,name,text,ok", [
@@ -47,6 +50,15 @@ def test_name_and_attributes(minilm, head, attrs, name, text, ok):
     vocab = ["sofa", "bathtub", "desk", "fish tank", "reading lamp", "chair", "office chair"]
     assert bool(v.target_fits(t, [[P(name, text)]], vocab)[0]) is ok
     assert bool(v.target_fits(t, [[P(name, text), P(name, name)]], vocab)[0]) is ok  # a look that says less
+
+
+def test_a_generic_head_names_any_object_unless_the_house_uses_the_word(minilm):
+    """"The hottest thing in the den": 'thing' names no kind, so the other parts single the object out."""
+    v, _ = minilm
+    names = [{"kiln"}, {"sewing machine"}, {"thing"}]
+    assert v.names_match("thing", names, ["kiln", "sewing machine"]).tolist() == [True, True, True]
+    assert v.names_match("thing", names, ["kiln", "sewing machine", "thing"]).tolist() == [False, False, True]
+    assert v.names_match("object", names[:2], ["kiln", "sewing machine"]).all()
 
 
 def test_a_name_the_house_holds_exactly_wins_over_a_near_one(minilm):

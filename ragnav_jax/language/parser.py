@@ -517,7 +517,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\b(?P<w>next|first)\s+(?:up|off)\b", r"\g<w>"),
     # "check both boilers", "both of the air purifiers", "the two lamps": two goals of that name (the marker
     # is read by _parse_segment); "both the kiln and the loom" lists two goals already
-    (r"\b(?:both\s+(?:of\s+)?(?:the\s+|these\s+|those\s+)?|the\s+two\s+)(?P<np>(?:[a-z][\w'-]*\s+){0,2}?[a-z][\w-]*?[^s'\s]s)\b"
+    (r"(?<!\bof\s)\b(?:both\s+(?:of\s+)?(?:the\s+|these\s+|those\s+)?|the\s+two\s+)(?P<np>(?:[a-z][\w'-]*\s+){0,2}?[a-z][\w-]*?[^s'\s]s)\b"
      r"(?!\s*(?:and|or|'s)\b)", lambda m: f"the ⟪pair⟫ {_singular_np(m.group('np'))}"),
     (r"\b(?:both|each\s+of|all\s+of)\s+(?=the\b)", ""),  # "visit both the kiln and the loom"
     (r"\b(?P<o>order|sequence)'s\b", r"\g<o> is"),
