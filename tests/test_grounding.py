@@ -93,6 +93,18 @@ def test_attributes_nobody_said_that_describe_nothing_are_dropped(verifier):
     assert ground_subgoal(verifier, sg, VOCAB).target.attributes == sg.target.attributes  # no captions: kept
 
 
+def test_inside_something_the_memory_never_named_is_a_room(verifier):
+    """"In the bakehouse": a room word the parser does not know reads as a relation 'in'; an anchor no recorded
+    name fits makes it the goal's room. Inside a recorded object ("in the shelf unit") stays a relation."""
+    def inside(anchor):
+        return Subgoal(0, Target("sofa", "sofa", relations=(Relation("in", Target(anchor, anchor)),)), text="")
+    g = ground_subgoal(verifier, inside("bakehouse"), VOCAB)
+    assert g.room == "bakehouse" and g.target.relations == ()
+    assert ground_subgoal(verifier, inside("shelf unit"), VOCAB) is not None
+    assert ground_subgoal(verifier, inside("shelf unit"), VOCAB).target.relations[0].anchor.head == "shelf unit"
+    assert ground_subgoal(verifier, dataclasses.replace(inside("bakehouse"), room="scullery"), VOCAB).room == "scullery"
+
+
 def test_without_a_memory_nothing_changes(verifier):
     sgs = (goal("suits you", "whatever order suits you"),)
     assert ground_subgoals(verifier, sgs, []) == (sgs, ())

@@ -3,6 +3,7 @@ and corruption detection, CLI, optional LLM endpoint. Streams come from `test_me
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import threading
@@ -103,6 +104,18 @@ def test_captions_deterministic_noisy_and_free_of_room_types(scenes, streams):
         seen |= {CONFUSIONS[x] for x in seen if x in CONFUSIONS}
         assert all(canonical(lbl) in seen for lbl in c.labels), (c, seen)
         assert len(c.labels) <= noise.max_objects
+
+
+def test_captions_say_attributes_under_any_key(apartment):
+    """A scene may name its attributes as it likes ("colour", "kind"): the captioner says their values too."""
+    from ragnav_jax.memory.captioner import describe_object
+    from ragnav_jax.world.scene import SceneObject
+
+    noise = dataclasses.replace(caption_noise(CFG.memory), attribute_keep=1.0, synonym=0.0, confusion=0.0)
+    o = SceneObject("kayak_1", "kayak", (1.0, 1.0, 0.2), (3.0, 0.6, 0.4), "shed",
+                    (("colour", "yellow"), ("kind", "sea"), ("material", "plastic"), ("state", "empty")))
+    name, text = describe_object(np.random.default_rng(0), o, 2.0, noise)
+    assert name == "kayak" and all(w in text.split() for w in ("yellow", "sea", "plastic", "empty")), text
 
 
 def test_caption_noise_statistics(apartment, streams):

@@ -118,12 +118,18 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | 
             head = best
         elif misread and fit < p.tau_head:
             return None
-    if head == t.head and attrs == t.attributes:
+    room, rels = sg.room, t.relations
+    inside = [r for r in rels if r.type == "in" and not r.anchor.relations and not r.anchor.attributes]
+    if room is None and inside and float(name_fit(verifier, [inside[0].anchor.head], vocab)[0]) < p.tau_head:
+        # "in the bakehouse": inside something the memory never named is a room whose name the parser lacks
+        room, rels = inside[0].anchor.phrase, tuple(r for r in rels if r is not inside[0])
+    if head == t.head and attrs == t.attributes and room == sg.room:
         return sg
     pre = t.phrase[: -len(t.head)] if t.phrase.endswith(t.head) else " ".join(attrs)
     gone = {w for a in t.attributes if a not in attrs for w in a.split()}
     phrase = " ".join([w for w in pre.split() if not _closed(w) and w not in gone] + [head])
-    return dataclasses.replace(sg, target=dataclasses.replace(t, phrase=phrase, head=head, attributes=attrs))
+    return dataclasses.replace(sg, room=room, target=dataclasses.replace(t, phrase=phrase, head=head, attributes=attrs,
+                                                                         relations=rels))
 
 
 def _anchor_phrases(t: Target) -> list[str]:

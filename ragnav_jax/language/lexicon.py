@@ -55,8 +55,9 @@ STATE_OPPOSITES: dict[str, str] = {
     "folded": "unfolded", "unfolded": "folded", "open": "closed", "closed": "open", "empty": "full", "full": "empty",
     "locked": "unlocked", "unlocked": "locked",
 }
-# States that say the same of an object, as a description may put it ("running" is what "switched on" says of a
-# dryer): a state is seen where any phrase of its class is said.
+# States and conditions that say the same of an object, as a description may put it ("running" is what
+# "switched on" says of a dryer, "dying" what "wilting" says of a plant): a state is seen where any phrase of its
+# class is said. The encoder cannot tell these: it places "dying" nearer "healthy" than "wilting".
 _SAME_STATES = (
     ("switched on", "turned on", "powered on", "running", "in use"),
     ("switched off", "turned off", "powered off", "unplugged"),
@@ -64,6 +65,8 @@ _SAME_STATES = (
     ("closed", "shut"),
     ("lit", "switched on", "turned on"),
     ("unlit", "switched off", "turned off"),
+    ("wilting", "wilted", "withered", "dying", "drooping", "droopy", "sickly", "unhealthy", "struggling", "ailing"),
+    ("healthy", "thriving", "flourishing", "vigorous"),
 )
 SAME_STATES: dict[str, tuple[str, ...]] = {
     s: tuple(dict.fromkeys(x for c in _SAME_STATES if s in c for x in c)) for c in _SAME_STATES for s in c}

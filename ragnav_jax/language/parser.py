@@ -920,6 +920,7 @@ class _Piece:
     det: bool = False  # the segment (after any verb) opens with a determiner ("the iron", not "red chair")
     clause: _Node | None = None  # the noun the segment's last relative clause describes ("the bin that is full")
     pair: bool = False  # "both boilers": two goals of that description
+    into: bool = False  # "head into the flour store and ...": a place the robot enters
 
     @property
     def empty(self) -> bool:
@@ -1275,6 +1276,14 @@ def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
     return tokens[0] in L.SUBORDINATORS or (tokens[0] in L.SUBJECT_PRONOUNS and len(tokens) > 1)
 
 
+_INTO = re.compile(r"(?:(?:please|now|then|first)\s+)*(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|roll)\s+"
+                   r"(?:back\s+|over\s+|on\s+)?(?:into|in\s+to)\s+the\b")
+# The words of a clause that only gives a reading: "humidity should be", "its temperature must read", "ideally".
+_READING_TALK = frozenset(k for k in L.READING_NAMES if " " not in k) | frozenset(
+    "its the it it's this should be is must will would read reads reading show shows showing measure measures level "
+    "value around about roughly approximately currently now still ideally ought to".split())
+
+
 def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     raw = _TOKEN.findall(seg)
     piece = _Piece(node=None, connector=connector, texts=[marks.restore(seg)])
@@ -1291,7 +1300,10 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             tokens.append(t)
     if _sequencing_clause(tokens, raw):
         return piece  # "when you've finished there,": says only that what follows comes next
+    piece.into = bool(_INTO.match(" ".join(tokens)))
     tokens, piece.led = _strip_leaders(tokens)
+    if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and set(tokens) & set(L.READING_NAMES):
+        return piece  # "- humidity should be about 80%": a reading of the previous goal
     room_end = next((k for k in range(3, min(len(tokens), 7)) if tokens[k] in ("the", "a", "an")), 0)
     if tokens[:2] == ["in", "the"] and room_end and L.is_room_phrase(tokens[2:room_end]):
         # "in the music room the record player on the credenza": the room comes first
@@ -1445,6 +1457,10 @@ def parse_instruction(text: str) -> TaskChain:
     pieces = [p for k, p in enumerate(pieces) if not (
         k + 1 < len(pieces) and pieces[k + 1].connector == ":" and not p.det and not p.locations and not p.sensors
         and not p.room and (p.node is None or not p.node.relations))]
+    for p, q in zip(pieces, pieces[1:]):
+        if (p.into and p.node is not None and q.node is not None and not q.room and not p.relations and not p.sensors
+                and not p.locations and not p.node.relations and not p.node.states and q.connector in ("and", "then", ",")):
+            p.room, p.node = " ".join(p.node.words), None  # "head into the flour store and find the sack": its room
     goals: list[_Piece] = []
     pending: _Piece | None = None
     for idx, p in enumerate(pieces):

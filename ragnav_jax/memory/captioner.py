@@ -92,8 +92,9 @@ CONFUSIONS: dict[str, str] = {
     "craft table": "workbench", "dehumidifier": "air purifier", "mini-fridge": "chest freezer",
     "chaise longue": "daybed", "bread maker": "toaster",
 }
-# Attribute keys that read as adjectives before the noun, in English adjective order; others become
-# trailing phrases ("state", of the unseen split, reads "a tumble dryer that is switched on").
+# Attribute keys that read as adjectives before the noun, in English adjective order; those of TRAILING become
+# trailing phrases ("state", of the unseen split, reads "a tumble dryer that is switched on"); any other key a
+# scene uses ("colour", "kind") is said before the noun, ahead of these.
 ADJECTIVE_KEYS = ("size", "condition", "style", "era", "finish", "color", "shade", "pattern", "material", "fabric")
 TRAILING = {
     "pot": "in a {} pot", "frame": "with a {} frame", "door": "with a {} door", "planter": "in a {} planter",
@@ -162,7 +163,10 @@ def _article(phrase: str) -> str:
 
 def _phrase(rng, o: SceneObject, label: str, dist: float, noise: CaptionNoise) -> str:
     attrs = o.attrs
-    adjs = [attrs[k] for k in ADJECTIVE_KEYS if k in attrs and rng.uniform() < noise.attribute_keep]
+    # a scene may name its attributes as it likes ("colour", "kind", "brand"): what the known keys do not
+    # place is said before the noun too, first
+    keys = [k for k in attrs if k not in ADJECTIVE_KEYS and k not in TRAILING] + list(ADJECTIVE_KEYS)
+    adjs = [attrs[k] for k in keys if k in attrs and rng.uniform() < noise.attribute_keep]
     if len(adjs) > 1 and rng.uniform() < 0.3:
         adjs = adjs[::-1]
     text = " ".join([*adjs, label])
