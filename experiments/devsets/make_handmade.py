@@ -41,6 +41,12 @@ def obj(i, cat, xyz, size, room, attrs=None, sensors=None):
     return o
 
 
+def house(name, rooms, segs, objects, start):
+    return {"format": "ragnav-scene/1", "name": name,
+            "rooms": [{"id": i, "type": t, "min": list(a), "max": list(b)} for i, t, a, b in rooms],
+            "walls": walls(segs), "objects": objects, "start": {"position": list(start), "yaw": 0.0}}
+
+
 def bakery():
     rooms = [("bakehouse", "bakehouse", (0, 0), (6, 5)), ("shop", "shop floor", (6, 0), (11, 5)),
              ("store", "flour store", (0, 5), (5, 9)), ("staff", "staff room", (5, 5), (11, 9))]
@@ -73,9 +79,7 @@ def bakery():
         obj("first_aid_kit_1", "first aid kit", (5.2, 8.5, 1.5), (0.1, 0.4, 0.3), "staff", {"colour": "green"}),
         obj("potted_fern_1", "fern", (6.0, 5.5, 0.35), (0.5, 0.5, 0.7), "staff", {"condition": "healthy"}, {"ndvi": 0.75}),
     ]
-    return {"format": "ragnav-scene/1", "name": "bakery",
-            "rooms": [{"id": i, "type": t, "min": list(a), "max": list(b)} for i, t, a, b in rooms],
-            "walls": walls(segs), "objects": o, "start": {"position": [3.0, 1.8], "yaw": 0.0}}
+    return house("bakery", rooms, segs, o, (3.0, 1.8))
 
 
 def boatyard():
@@ -110,9 +114,7 @@ def boatyard():
         obj("potted_fern_2", "fern", (0.5, 9.5, 0.35), (0.5, 0.5, 0.7), "office", {"condition": "healthy"}, {"ndvi": 0.7}),
         obj("radiator_1", "radiator", (4.9, 8.0, 0.4), (0.1, 1.0, 0.6), "office", {"colour": "white"}, {"temperature_c": 45}),
     ]
-    return {"format": "ragnav-scene/1", "name": "boatyard",
-            "rooms": [{"id": i, "type": t, "min": list(a), "max": list(b)} for i, t, a, b in rooms],
-            "walls": walls(segs), "objects": o, "start": {"position": [6.0, 2.0], "yaw": 0.0}}
+    return house("boatyard", rooms, segs, o, (6.0, 2.0))
 
 
 if __name__ == "__main__":
