@@ -116,6 +116,10 @@ def test_captions_say_attributes_under_any_key(apartment):
                     (("colour", "yellow"), ("kind", "sea"), ("material", "plastic"), ("state", "empty")))
     name, text = describe_object(np.random.default_rng(0), o, 2.0, noise)
     assert name == "kayak" and all(w in text.split() for w in ("yellow", "sea", "plastic", "empty")), text
+    # and the free-text description a scene may give (the schema's "description")
+    o = dataclasses.replace(o, description="Dented, with a Faded racing stripe.")
+    text = describe_object(np.random.default_rng(0), o, 2.0, noise)[1]
+    assert text.endswith(", dented, with a faded racing stripe") and "yellow" in text, text
 
 
 def test_caption_noise_statistics(apartment, streams):

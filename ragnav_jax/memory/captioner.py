@@ -173,6 +173,8 @@ def _phrase(rng, o: SceneObject, label: str, dist: float, noise: CaptionNoise) -
     for k, fmt in TRAILING.items():
         if k in attrs and rng.uniform() < noise.attribute_keep:
             text += " " + fmt.format(attrs[k])
+    if o.description and rng.uniform() < noise.attribute_keep:  # the scene's own words for how it looks
+        text += ", " + o.description.strip().rstrip(".").lower()
     if dist < 3.0:
         for k, v in o.sensors:
             if k in SENSOR_TEXT and rng.uniform() < noise.sensor_text:
@@ -274,7 +276,7 @@ def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg, fallback: Caption) 
     lines = []
     for oi, d, b in zip(obs.objects, obs.distances, obs.bearings):
         o = scene.objects[oi]
-        extra = ", ".join(f"{k}={v}" for k, v in [*o.attributes, *o.sensors])
+        extra = ", ".join([f"{k}={v}" for k, v in [*o.attributes, *o.sensors]] + [o.description] * bool(o.description))
         lines.append(f"- {o.category} at {d:.1f} m, bearing {math.degrees(b):.0f} deg" + (f" ({extra})" if extra else ""))
     prompt = (
         "You are the camera of a household robot. Describe this view in one or two sentences for a map of the home. "
