@@ -56,7 +56,7 @@ from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.pytrees import take
 from ragnav_jax.retrieval import kernels as K
-from ragnav_jax.retrieval.baselines import BASELINES, NaiveRAG, TextMemory
+from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
 from ragnav_jax.retrieval.evaluate import goal_items, parsed_order, prepare_batch, scored_batch
 from ragnav_jax.retrieval.index import node_slots
 from ragnav_jax.retrieval.params import ablation_params, params_from_config
@@ -80,12 +80,15 @@ CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look
 @dataclasses.dataclass(frozen=True)
 class MethodSpec:
     name: str
-    retrieval: str  # ragnav variant ("ragnav", "no_forest", ...), a BASELINES name, "remembr", "oracle", "etpnav"
+    retrieval: str  # what ranks the memory's nodes: "kernel" (RAGNav's scores), "text" (a text-retrieval model),
+    # "truth" (the true goals' nodes: the Oracle) or "none" (the ETPNav-style baseline explores instead)
     straight: bool  # straight-line legs and Euclidean order costs (no topological map)
     optimal_order: bool  # solve the order (False: instruction order)
     search: bool = True  # candidates run out: search the key poses where the instruction puts the goal (search.py)
     reads: bool = True  # reads the instruction and checks what it sees (False: the Oracle, which knows the goals)
     explores: bool = False  # finds goals by replaying its exploration, with no retrieval (the ETPNav-style baseline)
+    variant: str = "ragnav"  # kernel: the ablation ("ragnav", "no_forest", ...); text: the model (a BASELINES name)
+    positions: bool = False  # text: a position in the instruction adds a Gaussian term over node positions (ReMEmbR)
 
 
 def segment_clearance_np(p: np.ndarray, q: np.ndarray, obs: dict) -> np.ndarray:
@@ -98,15 +101,15 @@ def method_spec(name: str) -> MethodSpec:
         raise UserError(f"unknown method '{name}' (known: {', '.join(NAV_METHODS)})")
     if name.startswith("ragnav"):
         variant = name.split(":", 1)[1] if ":" in name else "ragnav"
-        return MethodSpec(name, variant, variant == "no_topology", True)
+        return MethodSpec(name, "kernel", variant == "no_topology", True, variant=variant)
     if name in BASELINES:
-        return MethodSpec(name, name, False, True)
+        return MethodSpec(name, "text", False, True, variant=name)
     # ReMEmbR hands its retrieved goal to a standard navigation stack: the same map paths and local planner as
     # RAGNav here (it once drove straight lines into walls, which measured a crippled navigator, not its memory).
     # The ETPNav-style baseline explores for itself, and the Oracle knows where every goal is: neither searches.
-    return {"remembr": MethodSpec(name, "remembr", False, False),
-            "etpnav": MethodSpec(name, "etpnav", False, False, search=False, explores=True),
-            "oracle": MethodSpec(name, "oracle", False, True, search=False, reads=False)}[name]
+    return {"remembr": MethodSpec(name, "text", False, False, variant="naive_rag", positions=True),
+            "etpnav": MethodSpec(name, "none", False, False, search=False, explores=True),
+            "oracle": MethodSpec(name, "truth", False, True, search=False, reads=False)}[name]
 
 
 def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:
@@ -257,126 +260,153 @@ def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
     return -1
 
 
+@dataclasses.dataclass
+class _Ranked:
+    """What a retrieval gives per (episode id, subgoal index): candidate nodes, best first, and per candidate the
+    instance's estimated position (RAGNav) and score; the kernel's top-1 before any pre-check; timings."""
+
+    nodes: dict = dataclasses.field(default_factory=dict)
+    est: dict = dataclasses.field(default_factory=dict)
+    top: dict = dataclasses.field(default_factory=dict)
+    score: dict = dataclasses.field(default_factory=dict)
+    timing: dict = dataclasses.field(default_factory=lambda: {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0,
+                                                              "embed_ms": 0.0})
+
+
+def _kernel_ranked(spec: MethodSpec, bank: MemoryBank, scenes, episodes, embedder, cfg: Config, verifier, ground
+                   ) -> _Ranked:
+    """RAGNav and its ablations (spec.variant): the retrieval kernel's ranking, distinct instances, the
+    pre-check on the memory's records and the closest view."""
+    k, out = cfg.eval.candidates, _Ranked()
+    by_name = {s.name: s for s in scenes}
+    p = ablation_params(params_from_config(cfg.retrieval), spec.variant)
+    batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True, bucket_slots=True)
+    out.timing["embed_ms"] = bmeta.embed_ms
+    if batch is None:
+        return out
+    rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
+    name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
+    classes = [name_classes(r[0])[0] for r in rec]  # per scene: name -> its aliases
+    vocab = [vocabulary(r[0]) for r in rec]  # per scene: every name
+    jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
+    t0 = time.perf_counter()
+    terms = jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
+    live = sum(sl is not None for sl in bmeta.slots)
+    out.timing["retrieval_ms_batched"] = 1e3 * (time.perf_counter() - t0) / max(live, 1)
+    score, relaxed, category, slot_best = map(np.asarray, terms)  # each (B, Q, N)
+    node_live = np.asarray(batch.index.node_mask)  # (B, N)
+    b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
+    idx0 = take(batch.index, b0)
+    q0 = take(batch.queries, (b0, s0))
+    jax.block_until_ready(_score_single(idx0, q0, p))
+    ts = []
+    for _ in range(5):
+        t0 = time.perf_counter()
+        jax.block_until_ready(_score_single(idx0, q0, p))
+        ts.append(time.perf_counter() - t0)
+    out.timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
+    # Where each candidate node's best-matching instance is (the index associates detections into
+    # instances with estimated positions): the reflection looks for the target there.
+    slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
+    inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
+    node_pos = np.asarray(batch.index.node_pos)[..., :2]  # (B, N, 2)
+    for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
+        if sl is None:
+            continue
+        b_, q_ = sl
+        ranked = candidate_order(score[sl], relaxed[sl], category[sl], node_live[b_], cfg.eval.widen)
+        ranked = [int(n) for n in ranked[: k * CANDIDATE_DEPTH]]
+        out.top[(ep.id, kk)] = ranked[0] if ranked else None
+        inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
+        pick = distinct_instances(inst, len(inst))
+        if cfg.eval.precheck and verifier is not None:  # on the memory's own records (no driving)
+            texts = [bmeta.imetas[b_].instance_phrases[inst[j]] if inst[j] >= 0 else () for j in pick]
+            kept = [j for j, ts in zip(pick, texts) if inst[j] < 0 or not ruled_out(
+                verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_], classes[b_],
+                inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
+            pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
+        pick = pick[:k]
+        nodes = [ranked[j] for j in pick]
+        if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest
+            nodes = view_nodes(nodes, [inst[j] for j in pick], slot_inst[b_], node_pos[b_], node_live[b_], inst_pos[b_])
+        out.nodes[(ep.id, kk)] = nodes
+        out.est[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
+        s_, r_ = score[sl], relaxed[sl]
+        out.score[(ep.id, kk)] = [float(s_[n] if s_[n] > K.NEG / 2 else r_[n]) for n in (ranked[j] for j in pick)]
+    return out
+
+
+def _text_ranked(spec: MethodSpec, bank: MemoryBank, scenes, items, embedder, cfg: Config) -> _Ranked:
+    """A text-retrieval baseline (spec.variant, BASELINES) over the memory's captions, each subgoal's text as the
+    query; spec.positions adds ReMEmbR's position term."""
+    k, out = cfg.eval.candidates, _Ranked()
+    by_name = {s.name: s for s in scenes}
+    t_total, n_total = 0.0, 0
+    for b, meta in enumerate(bank.metas):
+        mine = [it for it in items if it[0].scene == meta.scene and it[3] is not None]
+        if not mine or meta.num_nodes == 0:
+            continue
+        objs, phrases = node_slots(meta, by_name[meta.scene])
+        mem = TextMemory(tuple(meta.captions), tuple(tuple(p) for p in phrases))
+        model = BASELINES[spec.variant](mem, embedder)
+        t0 = time.perf_counter()
+        s = np.asarray(model.scores([it[3].text or it[0].instruction for it in mine]))[:, : meta.num_nodes]
+        if spec.positions:  # ReMEmbR's memory keeps positions: a position query adds a term
+            pos = np.asarray(bank.memory.position[b, : meta.num_nodes, :2])
+            for q, it in enumerate(mine):
+                if it[3].location is not None:
+                    d2 = np.sum((pos - [it[3].location.x, it[3].location.y]) ** 2, 1)
+                    s[q] += np.exp(-d2 / (2 * cfg.retrieval.sigma_loc**2))
+        t_total += time.perf_counter() - t0
+        n_total += len(mine)
+        for it, row in zip(mine, s):
+            out.nodes[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
+            out.score[(it[0].id, it[1])] = [float(row[x]) for x in out.nodes[(it[0].id, it[1])]]
+    out.timing["retrieval_ms_single"] = out.timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
+    return out
+
+
+def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
+    """The Oracle: each true goal's node."""
+    out, names = _Ranked(), list(bank.names)
+    by_name = {s.name: s for s in scenes}
+    for ep, kk, goal, _sg in items:
+        if goal is None:
+            continue
+        gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
+        node = _oracle_node(bank, names.index(ep.scene), gidx)
+        out.nodes[(ep.id, kk)] = [node] if node >= 0 else []
+    return out
+
+
 def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
                         embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
-    """Top-k candidate nodes per subgoal for a method; timings of the retrieval kernels. RAGNav's pre-check
-    (`eval.precheck`) needs the verifier."""
-    k = cfg.eval.candidates
-    names = list(bank.names)
-    by_name = {s.name: s for s in scenes}
+    """Top-k candidate nodes per subgoal for a method (spec.retrieval); timings of the retrieval kernels.
+    RAGNav's pre-check (`eval.precheck`) needs the verifier."""
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
         ground = TaggedReading(tagger, episodes, conf, then=ground)
     items = goal_items(episodes, ground, every_subgoal=True)
-    per_ep: dict[str, list] = defaultdict(list)
     subgoals: dict[str, object] = {}
     for ep, _kk, _goal, sg in items:
         subgoals.setdefault(ep.id, None)
         if sg is not None:
             subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
-    cand_of: dict[tuple[str, int], list[int]] = {}
-    est_of: dict[tuple[str, int], list] = {}
-    top_of: dict[tuple[str, int], int | None] = {}  # the kernel's top-1 (retrieval accuracy), before any pre-check
-    score_of: dict[tuple[str, int], list] = {}
-    timing: dict = {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0, "embed_ms": 0.0}
-    if spec.retrieval in ("ragnav", "no_forest", "no_topology", "no_spatial", "no_boost"):
-        p = ablation_params(params_from_config(cfg.retrieval), spec.retrieval)
-        batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True,
-                                     bucket_slots=True)
-        timing["embed_ms"] = bmeta.embed_ms
-        rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
-        name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
-        classes = [name_classes(r[0])[0] for r in rec]  # per scene: name -> its aliases
-        vocab = [vocabulary(r[0]) for r in rec]  # per scene: every name
-        if batch is not None:
-            jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
-            t0 = time.perf_counter()
-            terms = jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
-            live = sum(sl is not None for sl in bmeta.slots)
-            timing["retrieval_ms_batched"] = 1e3 * (time.perf_counter() - t0) / max(live, 1)
-            score, relaxed, category, slot_best = map(np.asarray, terms)  # each (B, Q, N)
-            node_live = np.asarray(batch.index.node_mask)  # (B, N)
-            b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
-            idx0 = take(batch.index, b0)
-            q0 = take(batch.queries, (b0, s0))
-            single = _score_single
-            jax.block_until_ready(single(idx0, q0, p))
-            ts = []
-            for _ in range(5):
-                t0 = time.perf_counter()
-                jax.block_until_ready(single(idx0, q0, p))
-                ts.append(time.perf_counter() - t0)
-            timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
-            # Where each candidate node's best-matching instance is (the index associates detections into
-            # instances with estimated positions): the reflection looks for the target there.
-            slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
-            inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
-            node_pos = np.asarray(batch.index.node_pos)[..., :2]  # (B, N, 2)
-            for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
-                if sl is not None:
-                    b_, q_ = sl
-                    ranked = candidate_order(score[sl], relaxed[sl], category[sl], node_live[b_], cfg.eval.widen)
-                    ranked = [int(n) for n in ranked[: k * CANDIDATE_DEPTH]]
-                    top_of[(ep.id, kk)] = ranked[0] if ranked else None
-                    inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
-                    pick = distinct_instances(inst, len(inst))
-                    if cfg.eval.precheck and verifier is not None:  # on the memory's own records (no driving)
-                        texts = [bmeta.imetas[b_].instance_phrases[inst[j]] if inst[j] >= 0 else () for j in pick]
-                        kept = [j for j, ts in zip(pick, texts) if inst[j] < 0 or not ruled_out(
-                            verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_], classes[b_],
-                            inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
-                        pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
-                    pick = pick[:k]
-                    nodes = [ranked[j] for j in pick]
-                    if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest
-                        nodes = view_nodes(nodes, [inst[j] for j in pick], slot_inst[b_], node_pos[b_],
-                                           node_live[b_], inst_pos[b_])
-                    cand_of[(ep.id, kk)] = nodes
-                    est_of[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
-                    s_, r_ = score[sl], relaxed[sl]
-                    score_of[(ep.id, kk)] = [float(s_[n] if s_[n] > K.NEG / 2 else r_[n]) for n in (ranked[j] for j in pick)]
-    elif spec.retrieval in BASELINES or spec.retrieval == "remembr":
-        t_total, n_total = 0.0, 0
-        for b, meta in enumerate(bank.metas):
-            mine = [it for it in items if it[0].scene == meta.scene and it[3] is not None]
-            if not mine or meta.num_nodes == 0:
-                continue
-            scene = by_name[meta.scene]
-            objs, phrases = node_slots(meta, scene)
-            mem = TextMemory(tuple(meta.captions), tuple(tuple(p) for p in phrases))
-            model = (NaiveRAG if spec.retrieval == "remembr" else BASELINES[spec.retrieval])(mem, embedder)
-            t0 = time.perf_counter()
-            s = np.asarray(model.scores([it[3].text or it[0].instruction for it in mine]))[:, : meta.num_nodes]
-            if spec.retrieval == "remembr":  # ReMEmbR's memory keeps positions: a position query adds a term
-                pos = np.asarray(bank.memory.position[b, : meta.num_nodes, :2])
-                for q, it in enumerate(mine):
-                    if it[3].location is not None:
-                        d2 = np.sum((pos - [it[3].location.x, it[3].location.y]) ** 2, 1)
-                        s[q] += np.exp(-d2 / (2 * cfg.retrieval.sigma_loc**2))
-            t_total += time.perf_counter() - t0
-            n_total += len(mine)
-            for it, row in zip(mine, s):
-                cand_of[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
-                score_of[(it[0].id, it[1])] = [float(row[x]) for x in cand_of[(it[0].id, it[1])]]
-        timing["retrieval_ms_single"] = timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
-    elif spec.retrieval == "oracle":
-        for ep, kk, goal, _sg in items:
-            if goal is None:
-                continue
-            b = names.index(ep.scene)
-            gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
-            node = _oracle_node(bank, b, gidx)
-            cand_of[(ep.id, kk)] = [node] if node >= 0 else []
+    r = {"kernel": lambda: _kernel_ranked(spec, bank, scenes, episodes, embedder, cfg, verifier, ground),
+         "text": lambda: _text_ranked(spec, bank, scenes, items, embedder, cfg),
+         "truth": lambda: _truth_ranked(bank, scenes, items),
+         "none": _Ranked}[spec.retrieval]()
+    per_ep: dict[str, list] = defaultdict(list)
     est_ep: dict[str, list] = defaultdict(list)
     for ep, kk, _goal, _sg in items:
-        per_ep[ep.id].append(cand_of.get((ep.id, kk), []))
-        est_ep[ep.id].append(est_of.get((ep.id, kk), [None] * len(cand_of.get((ep.id, kk), []))))
-    top = [[top_of[(ep.id, kk)] if (ep.id, kk) in top_of else (c[0] if c else None)
+        per_ep[ep.id].append(r.nodes.get((ep.id, kk), []))
+        est_ep[ep.id].append(r.est.get((ep.id, kk), [None] * len(r.nodes.get((ep.id, kk), []))))
+    top = [[r.top[(ep.id, kk)] if (ep.id, kk) in r.top else (c[0] if c else None)
             for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
-    scores = [[score_of.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
-    return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], timing,
+    scores = [[r.score.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
+    return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], r.timing,
                       [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {},
                       getattr(ground, "added", {}))
 
@@ -1008,7 +1038,8 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     t0 = time.perf_counter()
     verifier = verifier or Verifier.build(embedder, cfg)
     cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
-    oracle = retrieve_candidates(method_spec("oracle"), bank, scenes, episodes, embedder, cfg) if method != "oracle" else cands
+    oracle = cands if spec.retrieval == "truth" else retrieve_candidates(method_spec("oracle"), bank, scenes, episodes,
+                                                                          embedder, cfg)
     t1 = time.perf_counter()
     views = memory_views(verifier, bank, scenes) if spec.reads else {}
     if spec.reads:  # the reflection's check, one verdict per (episode, goal, object)
