@@ -1276,7 +1276,7 @@ def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
     return tokens[0] in L.SUBORDINATORS or (tokens[0] in L.SUBJECT_PRONOUNS and len(tokens) > 1)
 
 
-_INTO = re.compile(r"(?:(?:please|now|then|first)\s+)*(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|roll)\s+"
+_INTO = re.compile(r"\b(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|roll)\s+"
                    r"(?:back\s+|over\s+|on\s+)?(?:into|in\s+to)\s+the\b")
 # The words of a clause that only gives a reading: "humidity should be", "its temperature must read", "ideally".
 _READING_TALK = frozenset(k for k in L.READING_NAMES if " " not in k) | frozenset(
@@ -1300,7 +1300,8 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             tokens.append(t)
     if _sequencing_clause(tokens, raw):
         return piece  # "when you've finished there,": says only that what follows comes next
-    piece.into = bool(_INTO.match(" ".join(tokens)))
+    m = _INTO.search(" ".join(tokens))  # "could you pop into the craft room": after any politeness
+    piece.into = m is not None and "the" not in " ".join(tokens)[: m.start()].split()
     tokens, piece.led = _strip_leaders(tokens)
     if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and set(tokens) & set(L.READING_NAMES):
         return piece  # "- humidity should be about 80%": a reading of the previous goal
