@@ -276,13 +276,19 @@ def test_fallback_declares_what_fits_the_goal_best(setup, apartment):
 
 def test_an_object_declared_for_one_goal_answers_no_other(setup, apartment):
     """"Both potted plants" reads as two goals of one description; once a plant is declared for the first,
-    the second goes on to the other plant instead of declaring the same one again (a wrong declaration)."""
+    the second goes on to the other plant instead of declaring the same one again (a wrong declaration).
+    "Then back to the sofa" goes back to the object declared first."""
     cfg, bank, streams, emb, ex = setup
     eps = [Episode("both", apartment.name, "Go to both potted plants.", ("plant_1", "plant_2"), "text", "free")]
     for m in ("ragnav", "etpnav"):
         r = evaluate_navigation(bank, [apartment], eps, emb, cfg, m, streams=streams, executor=ex)[0][0]
         assert r["success"] and r["goal_status"] == ["found", "found"], m
         assert sorted(d["object"] for d in r["declarations"]) == ["plant_1", "plant_2"], m
+    # a goal that goes back to an object may declare it again
+    eps = [Episode("back", apartment.name, "Go to the sofa, then the television, then back to the sofa.",
+                   ("sofa_1", "tv_1", "sofa_1"), "text", "strict")]
+    r = evaluate_navigation(bank, [apartment], eps, emb, cfg, "ragnav", streams=streams, executor=ex)[0][0]
+    assert r["success"] and [d["object"] for d in r["declarations"]] == ["sofa_1", "tv_1", "sofa_1"]
 
 
 def test_recorded_legs_end_where_the_simulation_declared(setup, apartment, tmp_path):

@@ -34,6 +34,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+import re
 import time
 from collections import defaultdict, deque
 from collections.abc import Collection, Sequence
@@ -74,6 +75,7 @@ GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches 
 TIGHT_GAP_M = 0.0  # clearance beyond the robot's radius of the passages the local planner tries last
 ESCAPE_M = 0.3  # metres around a leg's ends where the local planner may pass cells as tight as the end itself
 CANDIDATE_DEPTH = 8  # ranked nodes per candidate slot searched for distinct instances
+REVISIT = re.compile(r"\b(?:back|again|return|returning|revisit|once\s+more)\b")  # a goal that goes back to an object
 CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
 
 
@@ -999,7 +1001,9 @@ class Loop:
                                         **({"fallback": True} if g in st.fell_back else {})})
                 st.status[g] = "found" if j is not None else "wrong"
                 st.remaining.remove(g)
-                for k in st.remaining:  # an object answers one goal: "both boilers" are two boilers
+                for k in st.remaining:  # an object answers one goal ("both boilers" are two boilers), unless the
+                    if st.subgoals is not None and k < len(st.subgoals) and REVISIT.search(st.subgoals[k].text):
+                        continue  # goal goes back to it ("then back to the sofa")
                     st.skip.add((k, payload))
                     if st.backup.get(k, (0, None))[1] == payload:
                         del st.backup[k]
