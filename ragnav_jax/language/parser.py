@@ -631,6 +631,9 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      r"|inside|alongside|above|below|beneath|underneath|up\s+(?:on|by|near|against))\b)", "located "),
     # "the coolest-running kiln": the superlative of how it runs is the superlative.
     (rf"\b(?P<sup>{_alt(L.SUPERLATIVES)})-(?:running|reading|measuring|looking|operating)\b", r"\g<sup>"),
+    # "whatever is at (9.5, 8.1)", "whatever sits by the door": a goal named by its place alone (a generic head).
+    (r"\bwhatever(?:'s|\s+is|\s+sits|\s+stands|\s+lies)\s+(?=(?:at|near|by|around|on|in|next\s+to|close\s+to)\b)",
+     "the thing "),
     # "there's a record player on the credenza - go to it": the object a sentence introduces is the goal.
     (r"\b(?:there's|there\s+is|there\s+should\s+be|you'll\s+find|you\s+will\s+find)\s+(?:a|an|one)\s+(?=[a-z])", "the "),
     # "which tumble dryer is running? go to that one.": the question names the goal; the pointer adds nothing.
