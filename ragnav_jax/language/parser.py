@@ -1282,7 +1282,8 @@ def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
 _INTO = re.compile(r"\b(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|roll)\s+"
                    r"(?:back\s+|over\s+|on\s+)?(?:into|in\s+to)\s+the\b")
 # The words of a clause that only gives a reading: "humidity should be", "its temperature must read", "ideally".
-_READING_TALK = frozenset(k for k in L.READING_NAMES if " " not in k) | frozenset(
+_READING_WORDS = frozenset(k for k in L.READING_NAMES if " " not in k)
+_READING_TALK = _READING_WORDS | frozenset(
     "its the it it's this should be is must will would read reads reading show shows showing measure measures level "
     "value around about roughly approximately currently now still ideally ought to".split())
 
@@ -1306,7 +1307,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     m = _INTO.search(" ".join(tokens))  # "could you pop into the craft room": after any politeness
     piece.into = m is not None and "the" not in " ".join(tokens)[: m.start()].split()
     tokens, piece.led = _strip_leaders(tokens)
-    if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and set(tokens) & set(L.READING_NAMES):
+    if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and _READING_WORDS.intersection(tokens):
         return piece  # "- humidity should be about 80%": a reading of the previous goal
     room_end = next((k for k in range(3, min(len(tokens), 7)) if tokens[k] in ("the", "a", "an")), 0)
     if tokens[:2] == ["in", "the"] and room_end and L.is_room_phrase(tokens[2:room_end]):

@@ -276,7 +276,8 @@ def llm_caption(scene: Scene, obs: NodeObservation, llm_cfg, fallback: Caption) 
     lines = []
     for oi, d, b in zip(obs.objects, obs.distances, obs.bearings):
         o = scene.objects[oi]
-        extra = ", ".join([f"{k}={v}" for k, v in [*o.attributes, *o.sensors]] + [o.description] * bool(o.description))
+        said = [f"{k}={v}" for k, v in [*o.attributes, *o.sensors]] + ([o.description] if o.description else [])
+        extra = ", ".join(said)
         lines.append(f"- {o.category} at {d:.1f} m, bearing {math.degrees(b):.0f} deg" + (f" ({extra})" if extra else ""))
     prompt = (
         "You are the camera of a household robot. Describe this view in one or two sentences for a map of the home. "
