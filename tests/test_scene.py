@@ -212,3 +212,30 @@ def test_round_trip_property(dx, dy, temp, color):
     o["attributes"] = {"color": color}
     s = scene_from_dict(d)
     assert scene_from_dict(json.loads(scene_to_json(s))) == s
+
+
+def test_sensor_keys_are_read_under_their_canonical_names(data):
+    """The schema's own example key "humidity" and a user's "temp_f" or "co2" meet the readings the parser
+    names (humidity_pct, temperature_c in Celsius, co2_ppm); a reading nobody named stays as written."""
+    d = copy.deepcopy(data)
+    d["objects"][0]["sensors"] = {"humidity": 62, "temp_f": 98.6, "co2": 900, "vibration_mm_s": 3}
+    got = scene_from_dict(d).objects[0].readings
+    assert got == {"humidity_pct": 62.0, "temperature_c": pytest.approx(37.0), "co2_ppm": 900.0, "vibration_mm_s": 3.0}
+    assert scene_from_dict(scene_to_dict(scene_from_dict(d))).objects[0].readings == got  # canonical keys stay
+    d["objects"][0]["sensors"] = {"temperature": 20, "temperature_c": 21}
+    with pytest.raises(SceneError, match=r"objects\[0\]\.sensors.*same reading \(temperature_c\)"):
+        scene_from_dict(d, "house.json")
+
+
+@settings(max_examples=60, deadline=None)
+@given(words=st.lists(st.sampled_from(["temp", "temperature", "humidity", "relative", "co2", "noise", "light",
+                                       "level", "battery", "soil", "moisture", "power", "weight", "x"]), min_size=1, max_size=3),
+       unit=st.sampled_from(["", "c", "f", "k", "pct", "ppm", "db", "lux", "w", "kw", "kg", "g", "hpa"]),
+       value=st.floats(-50, 5000, allow_nan=False))
+def test_canonical_sensor_is_idempotent(words, unit, value):
+    from ragnav_jax.language.readings import READINGS, canonical_sensor
+
+    key = "_".join([*words, unit] if unit else words)
+    k1, v1 = canonical_sensor(key, value)
+    assert canonical_sensor(k1, v1) == (k1, v1)
+    assert k1 in READINGS or k1 == key  # a key is canonical or left exactly as written

@@ -280,3 +280,20 @@ def test_unknown_room_names_by_their_distinctive_names(minilm):
         assert max(sc, key=sc.get) == room
     plain = {r: float(np.sort(v.cos(["sunroom"], list(ns))[0])[::-1][:3].mean()) for r, ns in names.items()}
     assert max(plain, key=plain.get) == "nursery"  # what the plain cosine chose
+
+
+def test_a_reading_under_a_users_key_is_checked(minilm, apartment):
+    """A scene that spells the fridge's reading "temp_f" (Fahrenheit): "the fridge colder than 6 degrees"
+    passes it, as it does under the generator's temperature_c."""
+    from ragnav_jax.world.scene import scene_from_dict, scene_to_dict
+
+    v, _ = minilm
+    d = scene_to_dict(apartment)
+    k = [o["id"] for o in d["objects"]].index("fridge_1")
+    celsius = d["objects"][k]["sensors"].pop("temperature_c")
+    d["objects"][k]["sensors"]["temp_f"] = celsius * 9 / 5 + 32
+    scene = scene_from_dict(d)
+    objs = scene.objects
+    view = v.scene_view(scene, list(range(len(objs))), {i: [o.category] for i, o in enumerate(objs)})
+    sg = parse_instruction(f"Go to the fridge colder than {celsius + 1:.1f} degrees.").subgoals[0]
+    assert np.flatnonzero(v.verdicts(view, sg, v.perceptions_of(scene, "f"))).tolist() == [k]

@@ -36,6 +36,7 @@ from ragnav_jax.filenames import name_problem
 from ragnav_jax.io import write_jsonl
 from ragnav_jax.language import lexicon as L
 from ragnav_jax.language.parser import split_noun_phrase
+from ragnav_jax.language.readings import READINGS
 from ragnav_jax.language.types import (
     Location,
     Relation,
@@ -111,8 +112,8 @@ def names_for(categories) -> tuple[dict[str, tuple[str, ...]], dict[str, frozens
 
 FRAMES = {"gold": "gold-framed", "black": "black-framed", "wooden": "wooden-framed", "aluminium": "aluminium-framed",
           "frameless": "frameless"}
-APPROX_TOL = {"temperature_c": 3.0, "ndvi": 0.05, "humidity_pct": 5.0}  # "about v" matches |r - v| <= tol
-READING_TEXT = {"temperature_c": "temperature", "ndvi": "NDVI", "humidity_pct": "humidity"}
+APPROX_TOL = {k: r.tolerance for k, r in READINGS.items()}  # "about v" matches |r - v| <= tol
+READING_TEXT = {k: r.text for k, r in READINGS.items()}
 NEAR_TYPES = ("near", "next_to", "beside", "by")
 REL_TEXT = {
     "near": ("near", "close to"),

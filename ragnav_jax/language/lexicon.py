@@ -242,6 +242,35 @@ READING_NAMES: dict[str, str] = {
     "humidity": "humidity_pct",
     "moisture": "humidity_pct",
     "rh": "humidity_pct",
+    # readings no generator writes, for scenes users write (language/readings.py: their keys and units)
+    "co2": "co2_ppm",
+    "co₂": "co2_ppm",
+    "carbon dioxide": "co2_ppm",
+    "co2 level": "co2_ppm",
+    "co2 concentration": "co2_ppm",
+    "noise": "noise_db",
+    "noise level": "noise_db",
+    "sound level": "noise_db",
+    "loudness": "noise_db",
+    "light level": "light_lux",
+    "illuminance": "light_lux",
+    "brightness": "light_lux",
+    "light intensity": "light_lux",
+    "battery": "battery_pct",
+    "battery level": "battery_pct",
+    "battery charge": "battery_pct",
+    "charge level": "battery_pct",
+    "power": "power_w",
+    "power draw": "power_w",
+    "power consumption": "power_w",
+    "power usage": "power_w",
+    "wattage": "power_w",
+    "weight": "weight_kg",
+    "mass": "weight_kg",
+    "pressure": "pressure_hpa",
+    "air pressure": "pressure_hpa",
+    "barometric pressure": "pressure_hpa",
+    "atmospheric pressure": "pressure_hpa",
 }
 
 # Gradable adjectives of the sensor readings: word -> (reading, +1 more / -1 less).
@@ -263,6 +292,12 @@ GRADABLE: dict[str, tuple[str, int]] = {
     "steamy": ("humidity_pct", 1),
     "moist": ("humidity_pct", 1),
     "dry": ("humidity_pct", -1),
+    "loud": ("noise_db", 1),
+    "noisy": ("noise_db", 1),
+    "quiet": ("noise_db", -1),
+    "bright": ("light_lux", 1),
+    "dim": ("light_lux", -1),
+    "heavy": ("weight_kg", 1),
 }
 SUPERLATIVES: dict[str, tuple[str, int]] = {
     "warmest": ("temperature_c", 1),
@@ -284,6 +319,12 @@ SUPERLATIVES: dict[str, tuple[str, int]] = {
     "steamiest": ("humidity_pct", 1),
     "driest": ("humidity_pct", -1),
     "dryest": ("humidity_pct", -1),
+    "loudest": ("noise_db", 1),
+    "noisiest": ("noise_db", 1),
+    "quietest": ("noise_db", -1),
+    "brightest": ("light_lux", 1),
+    "dimmest": ("light_lux", -1),
+    "heaviest": ("weight_kg", 1),
 }
 COMPARATIVES: dict[str, tuple[str, int]] = {
     "warmer": ("temperature_c", 1),
@@ -299,6 +340,12 @@ COMPARATIVES: dict[str, tuple[str, int]] = {
     "drier": ("humidity_pct", -1),
     "dryer": ("humidity_pct", -1),
     "less humid": ("humidity_pct", -1),
+    "louder": ("noise_db", 1),
+    "noisier": ("noise_db", 1),
+    "quieter": ("noise_db", -1),
+    "brighter": ("light_lux", 1),
+    "dimmer": ("light_lux", -1),
+    "heavier": ("weight_kg", 1),
 }
 EXTREME_WORDS = {
     "highest": 1, "maximum": 1, "max": 1, "greatest": 1, "largest": 1, "biggest": 1, "top": 1, "peak": 1,
@@ -461,7 +508,7 @@ TRAILING_FILLERS = (
     "please", "first", "last", "too", "again", "now", "afterwards", "afterward", "as well", "quickly", "thanks",
     "thank you", "then", "for me", "if you can", "if possible", "nearby", "next", "also", "straight away",
     "right away", "as soon as possible", "asap", "at the end", "at the start", "at the beginning",
-    "of all", "of them all", "of all of them", "among them", "overall", "there", "over there", "in there",
+    "of all", "of them all", "of all of them", "among them", "overall", "there", "over there", "in there", "itself",
     # "X comes first, then Y", "X is your last stop"
     *(f"{v} {o}" for v in ("comes", "goes", "is", "should come", "should be", "will be", "must be", "has to be")
       for o in (*ORDINAL_WORDS, "at the end", "after that", "in the middle")),

@@ -45,6 +45,7 @@ import re
 import unicodedata
 
 from ragnav_jax.language import lexicon as L
+from ragnav_jax.language.readings import UNIT_READING
 from ragnav_jax.language.types import (
     Location,
     ParseError,
@@ -98,7 +99,9 @@ EXT_ALT = _alt(L.EXTREME_WORDS)
 UNIT = (
     r"(?:°\s*[cf]\b|°|degrees?(?:\s+(?:celsius|centigrade|fahrenheit|c|f)\b)?"
     r"|degs?\b\.?(?:\s*(?:celsius|centigrade|fahrenheit|c|f)\b)?|celsius\b|centigrade\b"
-    r"|fahrenheit\b|c\b|f\b|%|percent\b|per\s+cent\b)"
+    r"|fahrenheit\b|c\b|f\b|%|percent\b|per\s+cent\b"
+    r"|ppm\b|parts\s+per\s+million\b|db\b|dba\b|decibels?\b|lux\b|lx\b|kw\b|kilowatts?\b|w\b|watts?\b"
+    r"|kg\b|kilos?\b|kilograms?\b|hpa\b|mbar\b|millibars?\b)"
 )
 _POST_ALT = _alt(L.COMPARATOR_POSTFIX)
 POST = rf"(?:\s*(?P<post>{_POST_ALT}))?"  # "55 degrees or more", "0.14 or thereabouts"
@@ -170,7 +173,8 @@ _VERB_BEFORE_SENSOR = re.compile(
     r"\b(?:(?:that|which|who)\s+)?(?:(?:is|are)\s+)?(?:currently\s+)?"
     r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
     r"|operates|kept|set|heated|cooled|holding|holds|staying|stays|scoring|scores|rated|rating|hovering|hovers"
-    r"|sitting|sits|exhibiting|exhibits|displaying|displays|recording|records|show|exhibit|display|record|register|read)(?:\s+(?:at|to|around))?(?:\s+(?:the|an?))?\s+(?=(?P<k>⟪[a-z]+⟫))"
+    r"|sitting|sits|exhibiting|exhibits|displaying|displays|recording|records|show|exhibit|display|record|register|read"
+    r"|drawing|draws|using|uses|consuming|consumes|pulling|pulls|weighing|weighs)(?:\s+(?:at|to|around))?(?:\s+(?:the|an?))?\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -190,7 +194,10 @@ _SUPER_ADJ = re.compile(
 )
 
 # Leftovers that mean a number was meant but could not be read.
-_BAD_AFTER_READING = re.compile(rf"(?P<all>{READ_ALT}\s+(?:is\s+|of\s+)?{CMP_ALT}\s+(?P<bad>[^\s⟪⟫]+))")
+# (a comparator word before a determiner is a preposition: "the battery under the desk")
+_BAD_AFTER_READING = re.compile(
+    rf"(?P<all>{READ_ALT}\s+(?:is\s+|of\s+)?{CMP_ALT}\s+(?!(?:the|an?|my|your|our|his|her|its|their|this|that|these|those)\b)"
+    r"(?P<bad>[^\s⟪⟫]+))")
 _BAD_BEFORE_UNIT = re.compile(r"(?P<all>(?P<bad>[^\s⟪⟫]+)\s*(?:\bdegrees?\b|°|\bpercent\b))")
 _BAD_PAREN = re.compile(r"[(\[][^()\[\]]*\d[^()\[\]]*[)\]]")
 _BAD_XY = re.compile(r"\b[xy]\s*[=:]\s*\S*")
@@ -198,7 +205,7 @@ _MULTIDOT = re.compile(r"\d+\.\d+\.\d")
 # "the sofa or the armchair, whichever is closer", "either the kettle or the toaster": a choice of objects.
 _ALTERNATIVES = re.compile(
     r"\bwhichever\s+(?:one\s+|of\s+(?:the\s+)?(?:two|them|those|these)\s+)?(?:is|'s|are)\s+(?:closer|nearer|closest|nearest"
-    r"|quicker|easier|more\s+convenient)\b|\beither\s+(?:the|a|an|my|your)\s+[^,;.]*?\bor\s+(?:the|a|an|my|your)\b"
+    r"|quicker|easier|more\s+convenient)\b(?!\s+(?:one\s+)?(?:first|to\s+start|to\s+begin))|\beither\s+(?:the|a|an|my|your)\s+[^,;.]*?\bor\s+(?:the|a|an|my|your)\b"
 )
 
 _FREE = re.compile(
@@ -209,6 +216,9 @@ _FREE = re.compile(
     r"|simplest|simpler|better|quicker|more\s+convenient|most\s+convenient|ok|okay|good|suits\s+you|suit\s+you"
     r"|cheapest|closest|easiest))?)*"
     r"|\b(?:the\s+)?order\s+(?:does\s+not|doesn't|do\s+not|don't|is\s+not|isn't)\s+(?:matter|important)"
+    # "the dog bed and the boot rack, whichever is closer first": an order by distance
+    r"|\bwhichever(?:\s+one)?\s+(?:is|'s)\s+(?:closer|nearer|closest|nearest)\s+(?:one\s+)?(?:first|to\s+start|to\s+begin)\b"
+    r"|\b(?:the\s+)?(?:closest|nearest)\s+(?:one\s+)?first\b"
     r"|\b(?:in\s+)?no\s+particular\s+order|\bany\s+order\s+(?:is\s+fine|works|will\s+do)"
     r"|\bwhichever\s+(?:order|way)\s+is\s+(?:quickest|fastest|shortest|best|closest|easiest)"
     r"|\b(?:the\s+)?(?:visiting\s+)?order\s+is\s+up\s+to\s+you|\bin\s+any\s+sequence"
@@ -747,14 +757,20 @@ class _Marks:
         return re.sub(r"\s+", " ", out).strip(" ,;:.")
 
 
+_UNIT_CODES = {"%": "%", "percent": "%", "per cent": "%", "ppm": "ppm", "parts per million": "ppm", "db": "db",
+               "dba": "db", "decibel": "db", "decibels": "db", "lux": "lux", "lx": "lux", "kw": "kw", "kilowatt": "kw",
+               "kilowatts": "kw", "w": "w", "watt": "w", "watts": "w", "kg": "kg", "kilo": "kg", "kilos": "kg",
+               "kilogram": "kg", "kilograms": "kg", "hpa": "hpa", "mbar": "hpa", "millibar": "hpa", "millibars": "hpa"}
+
+
 def _unit_code(unit: str | None) -> str:
     if not unit:
         return ""
     u = re.sub(r"\s+", " ", unit)
+    if u in _UNIT_CODES:
+        return _UNIT_CODES[u]
     if u.endswith("f") or "fahrenheit" in u:
         return "f"
-    if u in ("%", "percent", "per cent"):
-        return "%"
     return "c"
 
 
@@ -762,14 +778,14 @@ def _sensor(reading: str | None, comparator: str, num: str | None, unit: str | N
     code = _unit_code(unit)
     value = None if num is None else _to_float(num, f"'{span.strip()}'")
     if reading is None:
-        if code in ("c", "f"):
-            reading = "temperature_c"
-        elif code == "%":
-            reading = "humidity_pct"
+        if code in UNIT_READING:
+            reading = UNIT_READING[code]
         else:
             reading = "ndvi" if value is not None and abs(value) <= 1.0 else "temperature_c"
     if value is not None and code == "f" and reading == "temperature_c":
         value = round((value - 32.0) * 5.0 / 9.0, 4)
+    if value is not None and code == "kw" and reading == "power_w":
+        value = round(value * 1000.0, 4)
     return SensorConstraint(reading, comparator, value, code)
 
 
@@ -1281,11 +1297,26 @@ def _sequencing_clause(tokens: list[str], raw: list[str]) -> bool:
 
 _INTO = re.compile(r"\b(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|roll)\s+"
                    r"(?:back\s+|over\s+|on\s+)?(?:into|in\s+to)\s+the\b")
-# The words of a clause that only gives a reading: "humidity should be", "its temperature must read", "ideally".
+# The words of a clause that only gives a reading: "humidity should be", "its temperature must read", "ideally",
+# "the humidity in it should be"; it names the reading or refers back ("it should be hotter than 200 degrees").
 _READING_WORDS = frozenset(k for k in L.READING_NAMES if " " not in k)
 _READING_TALK = _READING_WORDS | frozenset(
-    "its the it it's this should be is must will would read reads reading show shows showing measure measures level "
-    "value around about roughly approximately currently now still ideally ought to".split())
+    "its the it it's this that should be is must will would read reads reading show shows showing measure measures level "
+    "value around about roughly approximately currently now still ideally ought to in inside of".split())
+_REFERS_BACK = frozenset("it its it's this that should must will would ought be is".split())
+
+
+_APPOSITION_LEADS = (("it's",), ("it", "is"), ("that's",), ("that", "is"), ("this", "is"))
+
+
+def _strip_apposition(tokens: list[str]) -> list[str]:
+    """ "it's the thing running at over 100 degrees on the worktop": what follows describes the previous goal."""
+    for lead in _APPOSITION_LEADS:
+        n = len(lead)
+        if (tuple(tokens[:n]) == lead and len(tokens) > n + 2 and tokens[n] in ("the", "a", "an")
+                and tokens[n + 1] in L.GENERIC_HEADS | {"one"}):
+            return tokens[n + 2:]
+    return tokens
 
 
 def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
@@ -1307,7 +1338,9 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     m = _INTO.search(" ".join(tokens))  # "could you pop into the craft room": after any politeness
     piece.into = m is not None and "the" not in " ".join(tokens)[: m.start()].split()
     tokens, piece.led = _strip_leaders(tokens)
-    if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and _READING_WORDS.intersection(tokens):
+    tokens = _strip_apposition(tokens)
+    if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and (
+            _READING_WORDS.intersection(tokens) or tokens[0] in _REFERS_BACK):
         return piece  # "- humidity should be about 80%": a reading of the previous goal
     room_end = next((k for k in range(3, min(len(tokens), 7)) if tokens[k] in ("the", "a", "an")), 0)
     if tokens[:2] == ["in", "the"] and room_end and L.is_room_phrase(tokens[2:room_end]):

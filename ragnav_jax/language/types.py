@@ -29,6 +29,7 @@ import math
 from typing import Any
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.language.readings import READINGS as _READINGS
 
 FORMAT = "ragnav-taskchain/1"
 
@@ -54,7 +55,7 @@ RELATION_TYPES = (
 PROXIMITY_RELATIONS = ("near", "next_to", "beside", "by", "with", "in_front_of", "behind", "opposite", "left_of", "right_of")
 
 # Sensor readings, named as the scene files name them.
-READINGS = ("temperature_c", "ndvi", "humidity_pct")
+READINGS = tuple(_READINGS)  # canonical sensor keys (language/readings.py)
 # gt/lt/ge/le: thresholds; approx: "about 55 degrees"; max/min: superlatives ("warmest", "lowest NDVI").
 COMPARATORS = ("lt", "le", "gt", "ge", "approx", "max", "min")
 ORDERS = ("strict", "free")
@@ -135,9 +136,10 @@ class Location:
 class SensorConstraint:
     """A condition on a sensor reading.
 
-    reading: one of READINGS (the scene's sensor keys). comparator: one of COMPARATORS.
-    value: the threshold / target in the scene's unit (degrees Celsius, NDVI, percent); None for
-    superlatives (max, min). unit: the unit as written ("c", "f", "%", "" when none was written).
+    reading: one of READINGS (canonical sensor keys, language/readings.py). comparator: one of COMPARATORS.
+    value: the threshold / target in the reading's canonical unit (degrees Celsius, NDVI, percent, ppm, dB,
+    lux, W, kg, hPa); None for superlatives (max, min). unit: the unit as written ("c", "f", "%", "ppm", "kw",
+    ..., "" when none was written).
     """
 
     reading: str

@@ -12,12 +12,13 @@ import jax.numpy as jnp
 import numpy as np
 from flax import struct
 
+from ragnav_jax.language.readings import READINGS
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.retrieval.kernels import OP_APPROX, OP_GT, OP_LT, OP_MAX, OP_MIN, OP_NONE
 
 COMPARATOR_OPS = {"gt": OP_GT, "ge": OP_GT, "lt": OP_LT, "le": OP_LT, "approx": OP_APPROX, "max": OP_MAX, "min": OP_MIN}
 # The natural softness of each reading: a sigmoid/Gaussian of width one unit of this.
-SENSOR_SCALES = {"temperature_c": 3.0, "ndvi": 0.05, "humidity_pct": 5.0}
+SENSOR_SCALES = {k: r.tolerance for k, r in READINGS.items()}
 
 
 @struct.dataclass

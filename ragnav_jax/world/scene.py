@@ -257,7 +257,7 @@ def scene_from_dict(data: Any, source: str = "<scene>") -> Scene:
                 room=o.get("room", ""),
                 attributes=tuple((str(k), str(v)) for k, v in o.get("attributes", {}).items()),
                 description=o.get("description", ""),
-                sensors=tuple((str(k), float(v)) for k, v in o.get("sensors", {}).items()),
+                sensors=_sensors(o.get("sensors", {}), source, len(objects)),
             )
         )
     start = Start(tuple(float(v) for v in data["start"]["position"]), float(data["start"].get("yaw", 0.0)))
@@ -269,6 +269,21 @@ def scene_from_dict(data: Any, source: str = "<scene>") -> Scene:
         for o in scene.objects
     )
     return dataclasses.replace(scene, objects=objs)
+
+
+def _sensors(raw: dict, source: str, i: int) -> tuple[tuple[str, float], ...]:
+    """An object's readings under their canonical keys and units (`language/readings.py`: "humidity" is
+    humidity_pct, "temp_f" is temperature_c in Celsius); two keys for one reading are an error."""
+    from ragnav_jax.language.readings import canonical_sensor
+
+    out: dict[str, tuple[str, float]] = {}
+    for k, v in raw.items():
+        key, val = canonical_sensor(str(k), float(v))
+        if key in out:
+            raise SceneError(source, f"$.objects[{i}].sensors",
+                             f"'{out[key][0]}' and '{k}' are the same reading ({key}); keep one")
+        out[key] = (str(k), val)
+    return tuple((key, val) for key, (_, val) in out.items())
 
 
 def _num(v: float) -> float | int:
