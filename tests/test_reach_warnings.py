@@ -154,3 +154,16 @@ def test_cli_validate_warns_on_stderr_and_strict_fails(tmp_path, capsys):
     # The robot radius comes from the config: a wide robot no longer fits the clear scene's doorway.
     assert main(["validate", str(clear), "sim.robot_radius=0.45", "sim.robot_height=0.5"]) == 0
     assert "too narrow for a robot of radius 0.45 m" in capsys.readouterr().err
+
+
+def test_an_obstacle_under_the_lidar_is_named():
+    """A dog bed 0.2 m tall stops the robot (its sphere reaches down to 0.05 m) but lies under the lidar's
+    plane (0.25 m): exploration maps floor there. A rug (flat) and a table (cut by the plane) are fine."""
+    from ragnav_jax.world.blockers import lidar_blind
+
+    s = scene_from_dict(two_rooms([_obj("dog_bed_1", "dog bed", 2.0, 1.0, 0.9, 0.7, 0.2),
+                                   _obj("rug_1", "rug", 2.0, 3.0, 1.0, 0.6, 0.02),
+                                   _obj("table_1", "coffee table", 3.0, 3.0, 0.8, 0.5, 0.4)]))
+    lines = lidar_blind(s, lidar_height=0.25, robot_bottom=0.05)
+    assert len(lines) == 1 and "'dog_bed_1' (dog bed)" in lines[0] and "under the lidar (0.25 m)" in lines[0]
+    assert lidar_blind(s, lidar_height=0.15, robot_bottom=0.05) == []

@@ -407,6 +407,19 @@ def format_blocked(scene: Scene, b: Blocked, robot_radius: float) -> str:
     return line
 
 
+def lidar_blind(scene: Scene, lidar_height: float, robot_bottom: float) -> list[str]:
+    """Warning lines for objects that stop the robot (their top is above its lowest point, `robot_bottom`)
+    but stand below the lidar's plane: exploration maps free floor there, plans through them and gets stuck."""
+    out = []
+    for o in geometry.blocking_objects(scene):
+        top = o.position[2] + o.size[2] / 2
+        if robot_bottom < top < lidar_height:
+            out.append(f"object '{o.id}' ({o.category}) at {_at(o.position[:2])} is {_num(top)} m tall, under the "
+                       f"lidar ({_num(lidar_height)} m) but high enough to stop the robot: exploration cannot see it "
+                       f"and may not get past it")
+    return out
+
+
 def reach_warnings(scene: Scene, robot_radius: float) -> list[str]:
     """Warning lines for every room and object of the scene the robot cannot reach (empty when all can)."""
     return [format_blocked(scene, b, robot_radius) for b in find_blocked(scene, robot_radius)]

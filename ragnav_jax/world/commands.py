@@ -71,7 +71,7 @@ def cmd_validate(args, cfg) -> int:
     import sys
 
     from ragnav_jax.errors import SceneError
-    from ragnav_jax.world.blockers import reach_warnings
+    from ragnav_jax.world.blockers import lidar_blind, reach_warnings
     from ragnav_jax.world.limits import scene_size_problems
     from ragnav_jax.world.scene import load_scene, scene_files
 
@@ -89,7 +89,8 @@ def cmd_validate(args, cfg) -> int:
             for problem in scene_size_problems(s, cfg.sim):
                 print(f"warning: {f}: {problem}: explore refuses it", file=sys.stderr)
                 warned["size"] += 1
-            for line in reach_warnings(s, cfg.sim.robot_radius):
+            blind = lidar_blind(s, cfg.sim.lidar_height, cfg.sim.robot_height - cfg.sim.robot_radius)
+            for line in reach_warnings(s, cfg.sim.robot_radius) + blind:
                 print(f"warning: {f}: {line}", file=sys.stderr)
                 warned["reachability"] += 1
     if bad:
