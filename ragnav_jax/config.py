@@ -306,7 +306,9 @@ class ExploreConfig:
 class PlanningConfig:
     """Order planning (paper's Pi* objective), paths and guide (ragnav_jax/planning)."""
 
-    lam: float = 10.0  # metres charged per goal pair visited against the instruction order; 0 = free
+    lam: float = 1.0e4  # metres charged per goal pair visited against the instruction order; 0 = free. Read by
+    # `ragnav plan` and the closed loop for strict instructions; the default keeps their order (a strict episode
+    # visited out of order fails), smaller values trade the order for travel (sweep.axes.lam)
     solver: str = "auto"  # auto (Held-Karp up to 16 goals, else local search) | brute_force | held_karp | local_search
     local_search_iters: int = 100  # improving moves per start at most
     top_k: int = 1  # candidates per goal; > 1 chooses candidate and order jointly (Held-Karp)

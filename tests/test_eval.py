@@ -152,12 +152,12 @@ def test_plan_order_matches_brute_force():
     rng = np.random.default_rng(0)
     pts = rng.uniform(0, 10, (6, 2))
     cost = np.linalg.norm(pts[:, None] - pts[None], axis=-1)
-    order = plan_order(cost, 0, [1, 2, 3, 4, 5], [0, 1, 2, 3, 4], False, 0.0, True)
+    order = plan_order(cost, 0, [1, 2, 3, 4, 5], [0, 1, 2, 3, 4], False, 0.0)
     tot = lambda o: sum(cost[a, b] for a, b in zip([0] + [g + 1 for g in o], [g + 1 for g in o]))  # noqa: E731
     import itertools
 
     assert tot(order) == pytest.approx(min(tot(p) for p in itertools.permutations(range(5))))
-    assert plan_order(cost, 0, [1, 2, 3], [0, 1, 2], True, 1e4, True) == [0, 1, 2]
+    assert plan_order(cost, 0, [1, 2, 3], [0, 1, 2], True, 1e4) == [0, 1, 2]
     assert NAV_METHODS[0] == "ragnav"
 
 
@@ -582,3 +582,29 @@ def test_a_new_episode_count_in_the_same_slot_bucket_compiles_nothing(setup, apa
     compiles.clear()
     assert counts[1] == 0, counts
     assert slots[1] < slots[0] and (slots[1] - 1).bit_length() == (slots[0] - 1).bit_length()  # one bucket
+
+
+def test_the_loop_plans_with_the_configured_lambda_and_solver(setup, apartment, monkeypatch):
+    """`planning.lam` is the loop's order penalty: at 0 a strict "sofa, television, back to the sofa" goes to
+    the nearer television first (shorter, out of order: the episode fails); by default the instruction's
+    order holds. `planning.solver` is the solver the loop calls; the two exact ones give the same rows."""
+    import ragnav_jax.planning.order as order_mod
+
+    cfg, bank, streams, emb, ex = setup
+    eps = [Episode("back", apartment.name, "Go to the sofa, then the television, then back to the sofa.",
+                   ("sofa_1", "tv_1", "sofa_1"), "text", "strict")]
+
+    def run(**planning):
+        c = dataclasses.replace(cfg, planning=dataclasses.replace(cfg.planning, **planning))
+        return evaluate_navigation(bank, [apartment], eps, emb, c, "ragnav", streams=streams, executor=ex)[0][0]
+
+    strict, free = run(), run(lam=0.0)
+    assert strict["success"] and [d["truth"] for d in strict["declarations"]] == [0, 1, 2]
+    assert not free["success"] and free["declarations"][0]["object"] == "tv_1"  # the television first
+    assert free["travel_distance_m"] < strict["travel_distance_m"]
+    used = []
+    real = order_mod.solve
+    monkeypatch.setattr(order_mod, "solve", lambda *a, **k: used.append(k["method"]) or real(*a, **k))
+    brute = run(solver="brute_force")
+    assert used and set(used) == {"brute_force"}
+    assert {k: v for k, v in brute.items() if k != "legs"} == {k: v for k, v in strict.items() if k != "legs"}

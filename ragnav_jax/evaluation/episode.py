@@ -32,7 +32,6 @@ what it sees with the same open-vocabulary verifier (`verify.py`: a verdict tabl
 from __future__ import annotations
 
 import dataclasses
-import itertools
 import math
 import re
 import time
@@ -55,6 +54,7 @@ from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
+from ragnav_jax.planning.order import order_of
 from ragnav_jax.pytrees import take
 from ragnav_jax.retrieval import kernels as K
 from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
@@ -418,34 +418,14 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
 
 
 def plan_order(cost: np.ndarray, start: int, nodes: Sequence[int], goals: Sequence[int], strict: bool, lam: float,
-               optimal: bool) -> list[int]:
-    """Visiting order of `goals` (their target nodes `nodes`) from node `start`.
-
-    Objective (paper, Route Planning): path cost + lam * (pairs visited against the instruction order);
-    free-order episodes use lam = 0. Exact for up to 7 goals, nearest-neighbour beyond.
-    """
+               solver: str = "auto", max_iters: int = 100) -> list[int]:
+    """Visiting order of `goals` (their target nodes `nodes`) from node `start`: the paper's Pi*
+    (`planning/order.py`), path cost + lam * (goal pairs visited against the instruction order) for strict
+    episodes, path cost alone for free ones; goals unreachable from the start come last."""
     goals = list(goals)
-    if not optimal or len(goals) <= 1:
-        return goals
-    node = dict(zip(goals, nodes))
-
-    def total(order):
-        c, cur = 0.0, start
-        for g in order:
-            c += cost[cur, node[g]]
-            cur = node[g]
-        inv = sum(1 for i in range(len(order)) for j in range(i + 1, len(order)) if order[i] > order[j]) if strict else 0
-        return c + lam * inv
-
-    if len(goals) <= 7:
-        return list(min(itertools.permutations(goals), key=total))
-    out, cur, left = [], start, set(goals)
-    while left:
-        g = min(left, key=lambda x: cost[cur, node[x]])
-        out.append(g)
-        left.remove(g)
-        cur = node[g]
-    return out
+    keep = order_of(cost, start, list(nodes), goals if strict else [0] * len(goals), lam if strict else 0.0,
+                    solver, max_iters)
+    return [goals[k] for k in keep]
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -667,13 +647,16 @@ class Loop:
 
     def replan(self, st: EpisodeState) -> None:
         """Re-solves the order of the remaining goals from the robot's node with their current candidates."""
-        if st.strict or not self.spec.optimal_order:
+        if not self.spec.optimal_order:
             st.remaining = sorted(st.remaining)  # the instruction's order
             return
-        live = [g for g in st.remaining if self.current(st, g) is not None]
-        dead = [g for g in st.remaining if g not in live]
+        live = [g for g in sorted(st.remaining) if self.current(st, g) is not None]
         nodes = [self.current(st, g) for g in live]
-        st.remaining = plan_order(self.order_cost(st.b), st.node, nodes, live, False, 0.0, True) + dead
+        p = self.cfg.planning
+        order = plan_order(self.order_cost(st.b), st.node, nodes, live, st.strict, p.lam, p.solver, p.local_search_iters)
+        for d in sorted(set(st.remaining) - set(live)):  # goals with no candidate left keep their instruction place
+            order.insert(max((k + 1 for k, g in enumerate(order) if g < d), default=0) if st.strict else len(order), d)
+        st.remaining = order
 
     def estimate(self, st: EpisodeState, g: int):
         """(2,) estimated position of the current candidate's retrieved instance, or None."""

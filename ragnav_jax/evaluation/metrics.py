@@ -58,7 +58,8 @@ def _oracle_length(loop, st, oracle_nodes: list) -> float:
     goals = [g for g, c in enumerate(oracle_nodes) if c and np.isfinite(loop.cost[b][start, c[0]])]
     nodes = [oracle_nodes[g][0] for g in goals]
     strict = st.ep.order == "strict"
-    order = plan_order(loop.cost[b], start, nodes, goals, strict, loop.cfg.eval.strict_lam if strict else 0.0, True)
+    order = plan_order(loop.cost[b], start, nodes, goals, strict, loop.cfg.eval.strict_lam, loop.cfg.planning.solver,
+                       loop.cfg.planning.local_search_iters)
     c, cur = 0.0, start
     for g in order:
         c += float(loop.cost[b][cur, oracle_nodes[g][0]])

@@ -416,3 +416,34 @@ def solve(
         per = max(1, _episode_bytes(method, G, K) * lams.shape[0])
         batch_size = int(max(1, min(E, memory_budget // per)))
     return _solve(problems, lams, method=method, batch_size=min(batch_size, max(E, 1)), max_iters=max_iters)
+
+
+PAD_GOALS = 8  # goals of one host-side problem are padded to this, so one compilation serves every episode
+
+
+def order_of(cost: np.ndarray, start: int, nodes: list[int], rank: list[int], lam: float, method: str = "auto",
+             max_iters: int = 100) -> list[int]:
+    """Pi* for one episode from the host: indices into `nodes` in visiting order, goals unreachable from the
+    start after the planned ones (in their given order).
+
+    cost: (N, N) shortest-path costs (inf where no path); start: the robot's node; nodes: each goal's target
+    node; rank: each goal's place in the instruction (equal ranks are unordered); lam: the order penalty.
+    The problem is cut to the (G + 1) nodes it needs and padded to PAD_GOALS goals (jit-stable shapes)."""
+    G = len(nodes)
+    if G <= 1:
+        return list(range(G))
+    P = max(PAD_GOALS, G)
+    idx = [start, *nodes]
+    sub = np.full((P + 1, P + 1), np.inf, np.float32)
+    sub[: G + 1, : G + 1] = np.asarray(cost, np.float32)[np.ix_(idx, idx)]
+    targets = np.full(P, -1, np.int32)
+    targets[:G] = np.arange(1, G + 1)
+    ranks = np.zeros(P, np.int32)
+    ranks[:G] = rank
+    from ragnav_jax.planning.costs import order_problem
+
+    problem = order_problem(sub, np.int32(0), targets, rank=ranks)
+    result = solve(jax.tree.map(lambda x: x[None], problem), np.array([lam], np.float32), method=method,
+                   max_iters=max_iters)
+    planned = [int(k) for k in np.asarray(result.order[0, 0]) if 0 <= k < G]
+    return planned + [k for k in range(G) if k not in planned]
