@@ -411,6 +411,10 @@ def _list_marker(m: re.Match) -> str:
     return m.group(0) if before.count("(") > before.count(")") else "; "
 
 
+_POINTER = (r"\s*(?:(?:please\s+)?(?:go|head|drive|get)\s+(?:over\s+)?(?:to\s+(?:that|it|this)(?:\s+one)?|there)"
+            r"\s*[.!]?)?")  # "go to that one", "head over to it", "go there"
+
+
 _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for rx, rep in (
     # A heading naming the kind of text: "Maintenance request:", "Task list (in the order given):", "Note for
     # the robot:", "Care round:".
@@ -646,10 +650,16 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      "the thing "),
     # "there's a record player on the credenza - go to it": the object a sentence introduces is the goal.
     (r"\b(?:there's|there\s+is|there\s+should\s+be|you'll\s+find|you\s+will\s+find)\s+(?:a|an|one)\s+(?=[a-z])", "the "),
+    # "need a reading from the water cooler", "take a measurement off the kiln": the object read is the goal.
+    (r"\b(?:an?|the|some|another)\s+(?:(?:temperature|humidity|quick|fresh|new)\s+)?(?:reading|readings|measurement"
+     r"|measurements)\s+(?:from|of|off|on|at)\s+(?=(?:the|a|an|my|our|that|this)\b)", ""),
+    # "which machine in the break room is hottest? go there.": a superlative said of the question's noun phrase.
+    (rf"(?:^|(?<=[.!?;]\s))which\s+(?P<np>(?:[a-z][\w'-]*\s+){{0,6}}?[a-z][\w'-]*)\s+(?:is|are)\s+(?:the\s+)?"
+     rf"(?P<sup>{_alt(L.SUPERLATIVES)})(?:\s+(?:one|of\s+(?:them|all|the\s+lot)))?\s*\?{_POINTER}",
+     r"the \g<sup> \g<np>. "),
     # "which tumble dryer is running? go to that one.": the question names the goal; the pointer adds nothing.
     (r"(?:^|(?<=[.!?;]\s))which\s+(?P<np>(?:[a-z][\w'-]*\s+){0,3}?[a-z][\w'-]*)\s+(?P<v>is|are)\s+(?P<rest>[^?.!;]+)\?"
-     r"\s*(?:(?:please\s+)?(?:go|head|drive|get)\s+(?:over\s+)?to\s+(?:that|it|this)(?:\s+one)?\s*[.!]?)?",
-     r"the \g<np> that \g<v> \g<rest>. "),
+     + _POINTER, r"the \g<np> that \g<v> \g<rest>. "),
     # "the crib with the mustard finish", "the chair in a tweed fabric": a property noun after its value names no
     # object; the value is the goal's attribute.
     (r"\b(?:with|in|having)\s+(?:a|an|the|its|their)\s+(?P<w>(?:(?!(?:and|or|then)\b)[a-z][\w-]*\s+)?(?!(?:and|or|then)\b)[a-z][\w-]*)\s+(?:finish|colou?r|shade|hue"
@@ -1302,8 +1312,9 @@ _INTO = re.compile(r"\b(?:head|go|walk|step|pop|nip|move|come|get|wander|drive|r
 _READING_WORDS = frozenset(k for k in L.READING_NAMES if " " not in k)
 _READING_TALK = _READING_WORDS | frozenset(
     "its the it it's this that should be is must will would read reads reading show shows showing measure measures level "
-    "value around about roughly approximately currently now still ideally ought to in inside of".split())
+    "value around about roughly approximately currently now still ideally ought to in inside of on measurement".split())
 _REFERS_BACK = frozenset("it its it's this that should must will would ought be is".split())
+_READING_NOUNS = _READING_WORDS | frozenset("reading readings value measurement".split())  # "the reading on it should be"
 
 
 _APPOSITION_LEADS = (("it's",), ("it", "is"), ("that's",), ("that", "is"), ("this", "is"))
@@ -1340,7 +1351,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     tokens, piece.led = _strip_leaders(tokens)
     tokens = _strip_apposition(tokens)
     if piece.sensors and tokens and all(w in _READING_TALK for w in tokens) and (
-            _READING_WORDS.intersection(tokens) or tokens[0] in _REFERS_BACK):
+            _READING_NOUNS.intersection(tokens) or tokens[0] in _REFERS_BACK):
         return piece  # "- humidity should be about 80%": a reading of the previous goal
     room_end = next((k for k in range(3, min(len(tokens), 7)) if tokens[k] in ("the", "a", "an")), 0)
     if tokens[:2] == ["in", "the"] and room_end and L.is_room_phrase(tokens[2:room_end]):
