@@ -45,7 +45,7 @@ import re
 import unicodedata
 
 from ragnav_jax.language import lexicon as L
-from ragnav_jax.language.readings import UNIT_READING
+from ragnav_jax.language.readings import UNIT_CODES, UNIT_READING, to_canonical
 from ragnav_jax.language.types import (
     Location,
     ParseError,
@@ -767,18 +767,14 @@ class _Marks:
         return re.sub(r"\s+", " ", out).strip(" ,;:.")
 
 
-_UNIT_CODES = {"%": "%", "percent": "%", "per cent": "%", "ppm": "ppm", "parts per million": "ppm", "db": "db",
-               "dba": "db", "decibel": "db", "decibels": "db", "lux": "lux", "lx": "lux", "kw": "kw", "kilowatt": "kw",
-               "kilowatts": "kw", "w": "w", "watt": "w", "watts": "w", "kg": "kg", "kilo": "kg", "kilos": "kg",
-               "kilogram": "kg", "kilograms": "kg", "hpa": "hpa", "mbar": "hpa", "millibar": "hpa", "millibars": "hpa"}
-
-
 def _unit_code(unit: str | None) -> str:
+    """The unit code (readings.UNIT_CODES) of a UNIT match; degree forms ("°", "degrees F") are Celsius unless
+    they say Fahrenheit."""
     if not unit:
         return ""
     u = re.sub(r"\s+", " ", unit)
-    if u in _UNIT_CODES:
-        return _UNIT_CODES[u]
+    if u in UNIT_CODES and u not in ("c", "f"):
+        return UNIT_CODES[u]
     if u.endswith("f") or "fahrenheit" in u:
         return "f"
     return "c"
@@ -790,12 +786,12 @@ def _sensor(reading: str | None, comparator: str, num: str | None, unit: str | N
     if reading is None:
         if code in UNIT_READING:
             reading = UNIT_READING[code]
+        elif code == "%":  # a percentage no reading names is a humidity (battery levels are said so)
+            reading = "humidity_pct"
         else:
             reading = "ndvi" if value is not None and abs(value) <= 1.0 else "temperature_c"
-    if value is not None and code == "f" and reading == "temperature_c":
-        value = round((value - 32.0) * 5.0 / 9.0, 4)
-    if value is not None and code == "kw" and reading == "power_w":
-        value = round(value * 1000.0, 4)
+    if value is not None and UNIT_READING.get(code) == reading:  # 98.6 F is 37 C, 1.5 kW is 1500 W
+        value = round(to_canonical(value, code), 4)
     return SensorConstraint(reading, comparator, value, code)
 
 

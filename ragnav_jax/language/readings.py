@@ -40,25 +40,35 @@ READINGS: dict[str, Reading] = {
     "pressure_hpa": Reading("pressure", 5.0),
 }
 
-# Unit codes of the parser (`parser._unit_code`) -> the reading a bare number with that unit measures.
-UNIT_READING = {"c": "temperature_c", "f": "temperature_c", "%": "humidity_pct", "ppm": "co2_ppm", "db": "noise_db",
-                "lux": "light_lux", "w": "power_w", "kw": "power_w", "kg": "weight_kg", "hpa": "pressure_hpa"}
-
-# Unit words that end a scene key -> (scale, offset) to the canonical unit, and the reading they imply alone.
-_KEY_UNITS: dict[str, tuple[float, float, str | None]] = {
-    **dict.fromkeys(("c", "degc", "celsius", "centigrade"), (1.0, 0.0, "temperature_c")),
-    **dict.fromkeys(("f", "degf", "fahrenheit"), (5.0 / 9.0, -32.0 * 5.0 / 9.0, "temperature_c")),
-    **dict.fromkeys(("k", "kelvin"), (1.0, -273.15, "temperature_c")),
-    **dict.fromkeys(("pct", "percent", "perc", "%"), (1.0, 0.0, None)),
-    "ppm": (1.0, 0.0, "co2_ppm"),
-    **dict.fromkeys(("db", "dba", "decibels"), (1.0, 0.0, "noise_db")),
-    **dict.fromkeys(("lux", "lx"), (1.0, 0.0, "light_lux")),
-    **dict.fromkeys(("w", "watts"), (1.0, 0.0, "power_w")),
-    "kw": (1000.0, 0.0, "power_w"),
-    **dict.fromkeys(("kg", "kilograms", "kilos"), (1.0, 0.0, "weight_kg")),
-    **dict.fromkeys(("g", "grams"), (0.001, 0.0, "weight_kg")),
-    **dict.fromkeys(("hpa", "mbar", "millibars"), (1.0, 0.0, "pressure_hpa")),
+# Units as written (in sentences, and as the last word of a scene key) -> unit code.
+UNIT_CODES: dict[str, str] = {
+    **dict.fromkeys(("c", "degc", "celsius", "centigrade"), "c"),
+    **dict.fromkeys(("f", "degf", "fahrenheit"), "f"),
+    **dict.fromkeys(("k", "kelvin"), "k"),
+    **dict.fromkeys(("%", "pct", "percent", "per cent", "perc"), "%"),
+    **dict.fromkeys(("ppm", "parts per million"), "ppm"),
+    **dict.fromkeys(("db", "dba", "decibel", "decibels"), "db"),
+    **dict.fromkeys(("lux", "lx"), "lux"),
+    **dict.fromkeys(("w", "watt", "watts"), "w"),
+    **dict.fromkeys(("kw", "kilowatt", "kilowatts"), "kw"),
+    **dict.fromkeys(("kg", "kilo", "kilos", "kilogram", "kilograms"), "kg"),
+    **dict.fromkeys(("g", "grams"), "g"),
+    **dict.fromkeys(("hpa", "mbar", "millibar", "millibars"), "hpa"),
 }
+# Unit code -> the reading a number in that unit measures (none for %: humidity, battery, ...).
+UNIT_READING = {"c": "temperature_c", "f": "temperature_c", "k": "temperature_c", "ppm": "co2_ppm", "db": "noise_db",
+                "lux": "light_lux", "w": "power_w", "kw": "power_w", "kg": "weight_kg", "g": "weight_kg",
+                "hpa": "pressure_hpa"}
+# Unit code -> (scale, offset) to the canonical unit of its reading.
+TO_CANONICAL = {"f": (5.0 / 9.0, -32.0 * 5.0 / 9.0), "k": (1.0, -273.15), "kw": (1000.0, 0.0), "g": (0.001, 0.0)}
+
+
+def to_canonical(value: float, code: str) -> float:
+    """A value written in unit `code` in its reading's canonical unit (98.6 F -> 37 C, 1.5 kW -> 1500 W)."""
+    scale, offset = TO_CANONICAL.get(code, (1.0, 0.0))
+    return round(value * scale + offset, 6)
+
+
 _WORDS = re.compile(r"[a-z0-9%]+")
 
 
@@ -69,14 +79,13 @@ def canonical_sensor(key: str, value: float) -> tuple[str, float]:
     if key in READINGS:
         return key, float(value)
     words = _WORDS.findall(key.lower())
-    scale, offset, implied = 1.0, 0.0, None
-    if len(words) > 1 and words[-1] in _KEY_UNITS or len(words) == 1 and words[0] in _KEY_UNITS and _KEY_UNITS[words[0]][2]:
-        scale, offset, implied = _KEY_UNITS[words[-1]]
+    code = UNIT_CODES.get(words[-1]) if words else None
+    if code is None or len(words) == 1 and code not in UNIT_READING:
+        code = ""  # no unit written ("humidity"), or a bare "%" that names no reading
+    else:
         words = words[:-1]
-    name = " ".join(words)
-    rd = READING_NAMES.get(name) or (implied if not name else None)
-    if rd is None:
+    implied = UNIT_READING.get(code)
+    rd = READING_NAMES.get(" ".join(words)) if words else implied
+    if rd is None or implied is not None and implied != rd:  # unnamed, or "temperature_ppm": keep it as written
         return key, float(value)
-    if implied is not None and implied != rd:  # "temperature_ppm": a unit of another reading; keep it as written
-        return key, float(value)
-    return rd, round(float(value) * scale + offset, 6)
+    return rd, to_canonical(float(value), code)
