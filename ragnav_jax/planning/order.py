@@ -28,7 +28,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ragnav_jax.planning.costs import precedence, reachable_candidates
+from ragnav_jax.planning.costs import order_problem, precedence, reachable_candidates
 from ragnav_jax.planning.types import (
     INFEASIBLE,
     NONE_REACHABLE,
@@ -440,8 +440,6 @@ def order_of(cost: np.ndarray, start: int, nodes: list[int], rank: list[int], la
     targets[:G] = np.arange(1, G + 1)
     ranks = np.zeros(P, np.int32)
     ranks[:G] = rank
-    from ragnav_jax.planning.costs import order_problem
-
     problem = order_problem(sub, np.int32(0), targets, rank=ranks)
     result = solve(jax.tree.map(lambda x: x[None], problem), np.array([lam], np.float32), method=method,
                    max_iters=max_iters)
