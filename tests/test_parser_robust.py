@@ -321,6 +321,44 @@ def test_coordinates_after_any_noun(noun, x, y, form):
     assert sg.target.head == noun and (sg.location.x, sg.location.y) == (x, y)
 
 
+@_FAST
+@given(_NOUN, _COORD, _COORD, st.sampled_from(["@ ({x}, {y})", "@ {x}, {y}", "at x {x} / y {y}", "near x{x} y{y}",
+                                                "at x {x} | y {y}"]))
+def test_more_coordinate_forms_after_any_noun(noun, x, y, form):
+    """Round 12: "@" for "at", a slash or bar between the axes, an axis written against its number."""
+    assume(_plain_head(noun))
+    (sg,) = parse_instruction(f"go to the {noun} " + form.format(x=f"{x:g}", y=f"{y:g}")).subgoals
+    assert sg.target.head == noun and (sg.location.x, sg.location.y) == (x, y)
+
+
+@_FAST
+@given(st.lists(_NOUN, min_size=2, max_size=4, unique=True),
+       st.sampled_from(["{k}/ the {n} ", "The {n} / ", "The {n}\n", "the {n}\n", "- the {n}\n", "{k}. The {n}\n"]),
+       st.sampled_from(["", "Jobs for today:\n", "To do:\n", "Places to check: "]))
+def test_list_layouts_give_one_goal_an_item(nouns, item, heading):
+    """Round 12: a list written one item a line, with spaced slashes or with "1/" numbers is read item by item,
+    and a heading before a colon names nothing."""
+    assume(all(_plain_head(n) for n in nouns))
+    text = heading + "".join(
+        item.format(k=k + 1, n=n) for k, n in enumerate(nouns)).rstrip(" /\n")
+    c = parse_instruction(text)
+    assert [(s.target.head, s.target.attributes, s.location) for s in c.subgoals] == [(n, (), None) for n in nouns]
+
+
+@pytest.mark.parametrize("text,heads", [("go to the red\nsofa and then the fridge", ["sofa"]),
+                                        ("go to the\nfridge, then the lamp near\nthe bed", ["fridge", "lamp"]),
+                                        ("the fern with an ndvi of 0.3 / 0.5", None)])
+def test_a_wrapped_line_is_not_a_list(text, heads):
+    """A line break inside a sentence (lower case, no determiner, or after a word that needs what follows) only
+    wraps it; a slash between numbers stays out of the list rule."""
+    c = parse_instruction(text)
+    if heads is None:
+        assert len(c.subgoals) >= 1 and c.subgoals[0].target.head.startswith("fern")
+    else:
+        assert [s.target.head for s in c.subgoals][: len(heads)] == heads
+        assert len(c.subgoals) == 2
+
+
 _SOUP = st.sampled_from(
     (string.ascii_lowercase[:6] + " ").split() + "go to the a lamp that is which that's isn't not switched turned on off "
     "plugged in unplugged lit running open one ones , ( ) [ ] ; . - — and then the order is your call whichever "

@@ -133,7 +133,7 @@ _PAIR_PAREN = (
 )
 _AXIS = r"(?:[\s-]*(?:coordinate|coord|position|value)s?)?\s*(?:=|:|is|of)?\s*"  # "x=", "x: ", "x coordinate of "
 _PAIR_XY = (
-    rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|and|,\s*and)?\s*(?:(?:the|an?)\s+)?"
+    rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|/|\||and|,\s*and)?\s*(?:(?:the|an?)\s+)?"
     rf"y{_AXIS}(?P<y2>{NUM}){_NUM_END}{_METRES}"
 )
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
@@ -520,9 +520,23 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # "whichever shelves stand near the sofa": the verb of a nested anchor's clause.
     (r"\b(?P<w>whichever\s+(?:[a-z'-]+\s+){0,3}?)(?:stands?|sits?|lies?|rests?)\s+(?=(?:right\s+|just\s+|directly\s+)?"
      r"(?:next|near|close|by|beside|on|under|in|inside|not|behind|opposite|across|facing|to|above|below)\b)", r"\g<w>is "),
-    # List markers: "1) the kiln 2) the loom", "stop 2: the loom", "(a) the kiln", bullets; the numbers are
-    # positions in a list, not values.
-    (r"(?:(?<=^)|(?<=[\s:;]))(?:(?:\(?\d{1,2}\)|\(?[a-h]\)|\d{1,2}\.|#\d{1,2}:?)(?=\s*(?:the|a|an|my|your|our)\b)|[•·*▪►‣]"
+    # Asides that ask for nothing: "and while you're at it, the loom", "whilst you're there, the lamp".
+    (r",?\s*\b(?:and\s+)?(?:while|whilst)\s+(?:you're|you\s+are)\s+(?:at\s+it|there|over\s+there|passing)\b\s*,?", " and "),
+    # A term of address: "now dear, first go to", "ok love, the kiln", "thanks mate".
+    (r"(?:(?<=^)|(?<=[.!?;,:]\s)|(?<=[.!?;,:]))\s*(?:(?:now|ok|okay|right|so|well)\s+)?(?:my\s+)?(?:dear|darling|sweetie|"
+     r"sweetheart|honey|love|mate|pal|buddy)\b\s*,?\s*", " "),
+    # "@" is "at": "the kiln @ (3, 4)", "the loom @ 2.5, 7".
+    (r"\s*@\s*", " at "),
+    # "x3.5 y2": an axis written against its number.
+    (r"\b(?P<a>[xy])(?=[-+]?\d)", r"\g<a> "),
+    # A spaced slash between items is a list: "the kiln / the loom / the lamp"; between numbers or before an
+    # axis it is part of a coordinate pair ("3.5 / 2", "x 3.5 / y 2").
+    (r"(?<![\d\s])\s+/\s+(?![-+.]?\d|[xy]\b)", " ; "),
+    # "the desk that's got a lamp on it": has.
+    (r"\b(?P<w>that|which|who)(?:'s|\s+has|\s+have|'ve)\s+got\b", r"\g<w> has"),
+    # List markers: "1) the kiln 2) the loom", "1/ the kiln", "stop 2: the loom", "(a) the kiln", bullets; the
+    # numbers are positions in a list, not values.
+    (r"(?:(?<=^)|(?<=[\s:;]))(?:(?:\(?\d{1,2}\)|\(?[a-h]\)|\d{1,2}[./]|#\d{1,2}:?)(?=\s*(?:the|a|an|my|your|our)\b)|[•·*▪►‣]"
      r"|(?:stop|step|goal|stage|leg|destination|item|target|waypoint|no\.?|number)\s+(?:#\s*)?(?:\d{1,2}|one|two|three|four"
      r"|five|six|seven|eight|nine|ten)\s*[:.)-]|(?:1st|2nd|3rd|[4-9]th)\s*[:.)-])\s*",
      "; "),
@@ -1456,6 +1470,20 @@ def _clashes(goal: _Piece, extra: _Piece) -> bool:
 # ----------------------------------------------------------------------------------------------------
 
 
+# A line break ends a list item (one item a line is how lists are written) unless it only wraps a sentence: the
+# next line goes on in lower case with no determiner ("go to the red\nsofa"), or the line before ends in a word
+# that needs what follows ("go to the\nsofa", "the lamp near\nthe bed").
+_LINE_BREAK = re.compile(r"(?P<last>\S*)[ \t]*(?:\r?\n|\r)\s*(?P<next>\S*)")
+_NEEDS_MORE = frozenset("a an the my your our to of at in on near by with from into onto and or but then than".split())
+
+
+def _line_break(m: re.Match) -> str:
+    last, nxt = m.group("last"), m.group("next")
+    item = (not nxt[:1].islower() or nxt.lower() in ("the", "a", "an", "my", "your", "our")
+            ) and last.lower().strip("\"'") not in _NEEDS_MORE
+    return f"{last}{' ; ' if item and last[-1:] not in ';,:' else ' '}{nxt}"
+
+
 def _normalise(text) -> str:
     if not isinstance(text, str):
         raise ParseError(f"an instruction must be text, got {type(text).__name__}")
@@ -1464,6 +1492,7 @@ def _normalise(text) -> str:
     # Degree look-alikes that NFKC would turn into letters: masculine ordinal "º", ring above "˚".
     t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
+    t = _LINE_BREAK.sub(_line_break, t)
     t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
     t = re.sub(r"\s+", " ", t).strip()
     if not t:
@@ -1496,11 +1525,14 @@ def parse_instruction(text: str) -> TaskChain:
     parts = _SPLIT.split(s)
     # re.split with one named group yields [seg, connector, seg, connector, ...]
     segments = [(parts[k - 1].strip() if k else "", parts[k]) for k in range(0, len(parts), 2)]
-    pieces = [_parse_segment(seg, marks, re.sub(r"\s+", " ", conn)) for conn, seg in segments if seg.strip()]
+    kept = [k for k, (_, seg) in enumerate(segments) if seg.strip()]
+    pieces = [_parse_segment(segments[k][1], marks, re.sub(r"\s+", " ", segments[k][0])) for k in kept]
+    # A colon between a segment and the next, whatever list mark follows it ("jobs for today:\n- the kiln").
+    colon = [any(c == ":" for c, _ in segments[k + 1 : nxt + 1]) for k, nxt in zip(kept, kept[1:] + [len(segments)])]
 
     # A heading before a colon names nothing: "route to take:", "first things first:", "i need two things seen:".
     pieces = [p for k, p in enumerate(pieces) if not (
-        k + 1 < len(pieces) and pieces[k + 1].connector == ":" and not p.det and not p.locations and not p.sensors
+        k + 1 < len(pieces) and colon[k] and not p.det and not p.locations and not p.sensors
         and not p.room and (p.node is None or not p.node.relations))]
     for p, q in zip(pieces, pieces[1:]):
         if (p.into and p.node is not None and q.node is not None and not q.room and not p.relations and not p.sensors
