@@ -1,97 +1,77 @@
-"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set E).
+"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set M).
 
-Written after parser round 8, before round 9 was developed (on set D, now `unseen_dev8`), by a seventh author
-who does not write parser rules; measured, never developed against. Same four functions, arguments and
-meanings as the other template sets. The style is notes left for the robot by the people of a shared house:
+Written in round 12, before any run of it, after the round's parser changes were made on set E (now
+`unseen_dev9`); measured, never developed against. Same four functions, arguments and meanings as the other
+template sets. The style is first messages typed or spoken into a household robot's app by four new users:
 
-- a chatty flatmate: existentials and asides ("There's a lamp in the study that's been switched on, could
-  you find it?", "I think the kettle is in the kitchen, go and look"), order as "before anything else",
-  "save X for last", "do X before Y", "while you're at it" (free);
-- a landlord taking inventory: telegraphic, one line per stop ("1. The kettle in the kitchen\n2. The bean bag,
-  the teal one, near the crib. Order as listed."), "/" between stops, "Check: ...", "Any order.";
-- an engineer: symbols and abbreviations ("kettle @ kitchen", "temp > 20°C", "x=3.5,y=2", "1/ ... 2/ ...",
-  "->", "order: strict", "order: any");
-- a grandparent dictating: long sentences joined by "and then", numbers in words, "the one that is".
+- a smart-speaker transcript: lower case, no punctuation, fillers ("um", "uh", "okay so"), coordinates as
+  said aloud ("at x 4.2 y 7"), goals joined by "and then", "after that";
+- an office manager's email: a greeting, "Please could the robot attend the following:", one bullet a line
+  ("• the boiler (garage)"), "In the order above, please." / "Any order is fine.", a sign-off with a name;
+- a checklist: "[ ]" boxes, one item a line, determiners dropped ("[ ] kettle in kitchen"), "(in this order)";
+- a teenager's text: "2" for "to", "thn" / "n then" between goals, "ty", no capitals, determiners mostly
+  dropped ("go 2 teal bean bag by the crib thn kettle").
 
-Goals: attributes before the noun, after it ("the bean bag, the teal corduroy one") or comma-separated ("the
-teal, corduroy bean bag"); states before the noun ("the open toy chest", "the switched-on lamp") or after it
-("that's been switched on", "that's still open"); the room as "in the X", "over in the X", "down in the X",
-a possessive, or a noun modifier ("the kitchen kettle"); relations in new words ("right by", "up against",
-"a little way from", "across the room from", "on top of", "underneath", "that's got"). Readings: digits,
-words, decimals, "°C", "ºC", "C", "degrees", "%", "percent", symbols (">", "<", ">=", "<=", "≥", "≤", "~",
-"≈"); superlatives as "whichever X is hottest", "the hottest one", "the one reading lowest". Coordinates:
-"@ 3.5,2", "at 3.5, 2", "near (3.5, 2)", "at x 3.5 / y 2", "at (x: 3.5, y: 2)", "at x≈3.5, y≈2", always x then y.
+Goals: attributes before the noun, or after it as "(the teal one)" / "- the teal one -"; states before the
+noun or after it ("that's on", "which is still open", "that is currently switched off"); the room as "in the
+X", "(in the X)", "from the X"; relations in other words ("adjacent to", "just by", "across from",
+"at the back of", "sitting on", "that has"). Readings: "at least", "no more than", "more than", "less than",
+"roughly", "approx.", "°C", "deg", "degrees C", "%", "% humidity", "percent"; superlatives as "the warmest",
+"the X that's warmest", "the X reading the highest temp". Coordinates: "at (3.5, 2)", "position 3.5, 2",
+"x=3.5 y=2", "coords 3.5/2", "at 3.5 2", spoken "x three point five y two"; always x then y.
 
 Every draw comes from the NumPy generator passed in, so a seed gives the same text.
 """
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.phrasings import number_words
-from ragnav_jax.language.phrasings_dev4 import _and
 from ragnav_jax.language.phrasings_dev8 import is_plural, split_attributes
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
 # Relations and anchors
 
-_REL = {
-    "near": ("near", "a little way from", "close by", "in the vicinity of"),
-    "next_to": ("next to", "right next to", "up against"),
-    "beside": ("beside", "right beside"),
-    "by": ("by", "right by", "over by"),
-    "on": ("on", "on top of", "resting on"),
-    "under": ("under", "underneath", "below"),
-    "above": ("above", "up above"),
+REL_WORDS = {
+    "near": ("near", "close to", "not far from", "around"),
+    "next_to": ("next to", "adjacent to", "right next to"),
+    "beside": ("beside", "at the side of"),
+    "by": ("by", "just by"),
+    "on": ("on", "sitting on", "on top of"),
+    "under": ("under", "beneath"),
+    "above": ("above", "over"),
     "in": ("in", "inside"),
-    "with": ("with", "that's got"),
-    "in_room_with": ("in the same room as",),
-    "in_front_of": ("in front of", "just in front of"),
-    "behind": ("behind", "round the back of"),
-    "opposite": ("opposite", "across the room from", "facing"),
-    "left_of": ("to the left of", "on the left of"),
-    "right_of": ("to the right of", "on the right of"),
+    "with": ("with", "that has"),
+    "in_room_with": ("in the same room as", "in the room with"),
+    "in_front_of": ("in front of",),
+    "behind": ("behind", "at the back of"),
+    "opposite": ("opposite", "across from"),
+    "left_of": ("to the left of", "left of"),
+    "right_of": ("to the right of", "right of"),
 }
 
 
-def _state_words(state: str, before: bool) -> str:
-    """A state as written: hyphenated before the noun ('switched-on'), or as it is."""
-    if before and " " in state:
-        return state.replace(" ", "-")
-    return state
-
-
 def _rel(rng, r: Relation, plural: bool) -> str:
-    """A relation and its anchor: 'right by the crib', "that's got the work light", 'with the kettle'."""
-    a = _anchor(rng, r.anchor)
-    w = _pick(rng, _REL[r.type])
-    if w == "that's got" and plural:
-        w = "that have got"
-    return f"{w} {a}"
+    """A relation and its anchor: 'adjacent to the crib', 'that has the work light'."""
+    w = _pick(rng, REL_WORDS[r.type])
+    if w == "that has" and plural:
+        w = "that have"
+    return f"{w} {_anchor(rng, r.anchor)}"
 
 
 def _anchor(rng, t: Target) -> str:
-    """An anchor noun phrase: a state before a bare noun or after it ('the lamp, still switched on,'), its own
-    relations as a clause ('the credenza, which is next to the harp')."""
+    """An anchor noun phrase; its own state as a clause, its own relations after 'which is'."""
     pre, states = split_attributes(t)
-    plural = is_plural(t.head)
-    if len(states) == 1 and not pre:
-        s = f"the {_state_words(states[0], True)} {t.phrase}"
-    elif states:
-        s = f"the {t.phrase} that {'are' if plural else 'is'} {' and '.join(states)}"
-    else:
-        s = f"the {t.phrase}"
-    if not t.relations:
-        return s
-    parts = [_rel(rng, r, plural) for r in t.relations]
-    be = "are" if plural else "is"
-    have = "have got" if plural else "has got"
-    clause = " and ".join(have + p[len(p.split(" got")[0]) + 4:] if p.startswith("that") else
-                          p if p.startswith("with") else f"{be} {p}" for p in parts)
-    return f"{s}, which {clause},"
+    s = f"the {t.phrase}" + (f" that is {' and '.join(states)}" if states else "")
+    for i, r in enumerate(t.relations):
+        rel = _rel(rng, r, is_plural(t.head))
+        s += (" and" if i else "") + (" " if rel.startswith(("with", "that")) else " which is ") + rel
+    return s
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -99,128 +79,91 @@ def _anchor(rng, t: Target) -> str:
 
 
 def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
-    """A goal as a housemate writes it: 'the bean bag, the teal corduroy one, right by the crib', 'the kitchen
-    kettle', 'the switched-on lamp over in the study', 'the teal, corduroy bean bag', 'whichever heater in the
-    pantry is hottest', 'the guitar @ 3.5,2'. Relations come last.
-    """
+    """A goal as a new user writes it: 'the teal bean bag (nursery)', 'the bean bag - the teal one - in the
+    nursery', 'the lamp that's on from the study', 'the warmest radiator in the hall', 'the kettle at (3.5, 2)'.
+    Relations come last."""
     t = sg.target
     pre, states = split_attributes(t)
     plural = is_plural(t.head)
-    room = sg.room
     head_words = t.phrase[len(t.phrase) - len(t.head):] if t.phrase.endswith(t.head) else t.head
-    # attributes: before the noun, after it as "the X one(s)", or comma-separated before it
-    attr_style = "before"
-    if pre and not prefix:
-        attr_style = _pick(rng, ("before", "before", "one", "comma" if len(pre) > 1 else "before"))
-    # room: after the noun, possessive, or a noun modifier when nothing else stands before the noun
-    room_style = None
-    if room:
-        opts = ["in", "in", "over", "down", "possessive"]
-        if not pre and not prefix and not (states and len(states) == 1):
-            opts.append("modifier")
-        room_style = _pick(rng, opts)
-    state_before = bool(states) and len(states) == 1 and not pre and not prefix and room_style != "modifier" \
-        and rng.uniform() < 0.4
-    det = f"the {room}'s " if room_style == "possessive" else "the "
-    if room_style == "modifier":
-        det += room + " "
-    if prefix:
-        det += prefix + " "
-    if state_before:
-        det += _state_words(states[0], True) + " "
-    if attr_style == "one":
-        s = f"{det}{head_words}, the {' '.join(pre)} {'ones' if plural else 'one'},"
-    elif attr_style == "comma":
-        s = f"{det}{', '.join(pre)} {head_words}"
-    else:
-        s = det + t.phrase
-    post: list[str] = []
+    state_before = len(states) == 1 and not pre and not prefix and rng.uniform() < 0.4
+    one_after = bool(pre) and not prefix and rng.uniform() < 0.35
+    out = "the " + (prefix + " " if prefix else "") + (states[0].replace(" ", "-") + " " if state_before else "")
+    out += head_words if one_after else t.phrase
+    if one_after:
+        out += _pick(rng, (f" (the {' '.join(pre)} {'ones' if plural else 'one'})",
+                           f" - the {' '.join(pre)} {'ones' if plural else 'one'} -"))
     if states and not state_before:
-        be = "are" if plural else "'s"
-        adv = _pick(rng, ("", "been ", "still ")) if all(x.startswith("switched") for x in states) else \
-            _pick(rng, ("", "still "))
-        post.append(f"that{' ' if plural else ''}{be} {adv}{' and '.join(states)}")
+        be = "are" if plural else _pick(rng, ("'s", " is"))
+        out += _pick(rng, (f" that{be}", f" which{' are' if plural else ' is'}")) + _pick(rng, (" ", " still ", " currently ")) \
+            + " and ".join(states)
     if hint:
-        post.append(hint)
-    if room_style in ("in", "over", "down"):
-        post.append({"in": "in the ", "over": "over in the ", "down": "down in the "}[room_style] + room)
+        out += " " + hint
     if tail:
-        post.append(tail)
+        out += " " + tail
+    if sg.room:
+        out += _pick(rng, (f" in the {sg.room}", f" (in the {sg.room})", f" from the {sg.room}", f" in the {sg.room}"))
     for i, r in enumerate(t.relations):
-        post.append(("and also " if i else "") + _rel(rng, r, plural))
-    out = s
-    for i, p in enumerate(post):
-        sep = " " if i == 0 or out.endswith(",") or p.startswith("and also") else ", "
-        out += sep + p
-    return out.rstrip(" ,-").replace(",,", ",")
+        out += (" and " if i else " ") + _rel(rng, r, plural)
+    return " ".join(out.split()).rstrip(" -")
 
 
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases
 
-_T_UNITS = (("°C", "c"), (" °C", "c"), ("ºC", "c"), ("C", "c"), (" degrees", "c"), (" deg C", "c"))
-_H_UNITS = (("%", "%"), (" %", "%"), (" percent", "%"))
-_SYM = {"gt": (">", "above", "over"), "ge": (">=", "≥", "at or above"), "lt": ("<", "below", "under"),
-        "le": ("<=", "≤", "at or below"), "approx": ("~", "≈", "around")}
-
-
-def _number(rng, reading: str, value: float) -> tuple[str, float]:
-    """(the number as written, its value): digits, one decimal place, words, or a bare leading point."""
-    txt = _fmt_value(reading, value)
-    v = float(txt)
-    if reading == "ndvi":
-        return (txt[1:] if txt.startswith("0.") and rng.uniform() < 0.3 else txt), v
-    if v == int(v):
-        u = rng.uniform()
-        if u < 0.2 and abs(v) < 100:
-            return number_words(int(v)), v
-        if u < 0.3:
-            return f"{v:.1f}", v
-    return txt, v
-
-
+_T_UNITS = (("°C", "c"), (" °C", "c"), (" deg", "c"), (" degrees C", "c"), (" degrees", "c"), ("C", "c"))
+_H_UNITS = (("%", "%"), (" percent", "%"), ("% humidity", "%"))
+_CMP = {"gt": ("more than", "above", "over"), "ge": ("at least", "no less than"), "lt": ("less than", "below", "under"),
+        "le": ("no more than", "at most"), "approx": ("roughly", "approx.", "about")}
 _SUPER = {
-    ("temperature_c", "max"): ("hottest", "warmest"), ("temperature_c", "min"): ("coldest", "coolest"),
-    ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy", "unhealthiest"),
+    ("temperature_c", "max"): ("warmest", "hottest"), ("temperature_c", "min"): ("coldest", "coolest"),
+    ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy", "sickest"),
     ("humidity_pct", "max"): ("most humid", "dampest"), ("humidity_pct", "min"): ("driest", "least humid"),
 }
-_SUPER_READ = {"temperature_c": ("temperature", "temp"), "ndvi": ("NDVI",), "humidity_pct": ("humidity",)}
+_READ = {"temperature_c": ("temp", "temperature"), "ndvi": ("NDVI", "NDVI score"), "humidity_pct": ("humidity",)}
+
+
+def _spoken(rng, v: float, reading: str) -> tuple[str, float]:
+    """(the number as written, its value): digits, or words for whole numbers ('twenty-one')."""
+    txt = _fmt_value(reading, v)
+    val = float(txt)
+    if reading != "ndvi" and val == int(val) and abs(val) < 100 and rng.uniform() < 0.25:
+        return number_words(int(val)), val
+    return txt, val
 
 
 def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
     """(prefix before the noun or '', phrase after the noun or '', the constraint exactly as written).
 
-    Superlatives: 'hottest' before the noun, or after it ('- the hottest one', 'that reads the lowest
-    humidity', 'with the highest temp'); thresholds after the noun in symbols or words ('reading > 20°C',
-    'with temp >= 45%', 'at or below minus eighteen degrees', 'NDVI ~ .35', 'with humidity under 40 percent').
-    """
+    Superlatives: 'warmest' before the noun, or after it ('that's warmest', 'reading the highest temp');
+    thresholds after the noun ('with a temp of at least 20°C', 'humidity more than 60%', 'NDVI roughly 0.4',
+    'reading no more than minus eighteen degrees')."""
     rd = c.reading
     if c.is_superlative:
         adj = _pick(rng, _SUPER[(rd, c.comparator)])
-        k = int(rng.integers(4))
+        k = int(rng.integers(3))
         if k == 0:
             return adj, "", c
-        if k == 1:
-            return "", f"- the {adj} one -", c
+        if k == 1 and " " not in adj:
+            return "", f"that's {adj}", c
         hi = "highest" if c.comparator == "max" else "lowest"
-        return "", _pick(rng, (f"that reads the {hi} {_pick(rng, _SUPER_READ[rd])}",
-                               f"with the {hi} {_pick(rng, _SUPER_READ[rd])}")), c
-    n, value = _number(rng, rd, c.value)
-    sym = _pick(rng, _SYM[c.comparator])
+        return "", f"reading the {hi} {_pick(rng, _READ[rd])}", c
+    n, value = _spoken(rng, c.value, rd)
+    cmp = _pick(rng, _CMP[c.comparator])
     if rd == "ndvi":
-        lead = _pick(rng, ("with NDVI", "NDVI", "with an NDVI"))
-        return "", f"{lead} {sym} {n}", SensorConstraint(rd, c.comparator, value, "")
+        return "", f"{_pick(rng, ('with an NDVI', 'NDVI', 'NDVI score'))} {cmp} {n}", SensorConstraint(rd, c.comparator, value, "")
     if rd == "temperature_c":
         u, code = _pick(rng, _T_UNITS)
         if n[0].isalpha():
-            u, code = " degrees", "c"
-        lead = _pick(rng, ("reading", "with temp", "with a temperature", "at a temperature"))
-        return "", f"{lead} {sym} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
+            u = " degrees"
+        lead = _pick(rng, ("with a temp of", "reading", "temp", "at a temperature of"))
+        return "", f"{lead} {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
     u, code = _pick(rng, _H_UNITS)
     if n[0].isalpha():
         u = " percent"
-    lead = _pick(rng, ("with humidity", "humidity", "at a humidity"))
-    return "", f"{lead} {sym} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
+    if u == "% humidity":
+        return "", f"at {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
+    return "", f"{_pick(rng, ('humidity', 'with humidity'))} {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -228,91 +171,77 @@ def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tupl
 
 
 def hint_text_heldout(rng: np.random.Generator, x: str, y: str) -> str:
-    """A coordinate hint in the scene frame (metres), x then y: '@ 3.5,2', 'at 3.5, 2', 'near (3.5, 2)', 'at x
-    3.5 / y 2', 'at (x: 3.5, y: 2)', 'at x≈3.5, y≈2', 'located at 3.5 2'. Every form reads straight after a
-    noun."""
-    return _pick(rng, (f"@ {x},{y}", f"at {x}, {y}", f"near ({x}, {y})", f"at x {x} / y {y}", f"at (x: {x}, y: {y})",
-                       f"at x≈{x}, y≈{y}", f"located at {x} {y}", f"@ ({x}, {y})", f"at point ({x},{y})"))
+    """A coordinate hint in the scene frame (metres), x then y: 'at (3.5, 2)', 'position 3.5, 2', 'x=3.5 y=2',
+    'coords 3.5/2', 'at 3.5 2'."""
+    return _pick(rng, (f"at ({x}, {y})", f"position {x}, {y}", f"x={x} y={y}", f"coords {x}/{y}", f"at {x} {y}",
+                       f"around ({x},{y})"))
 
 
 # ----------------------------------------------------------------------------------------------------
 # Whole instructions
 
 
-def _end(s: str) -> str:
-    s = s.strip().replace(" ,", ",").replace(",,", ",").replace(",.", ".").replace(",?", "?").replace(", -", " -")
-    return s if s.endswith((".", "?", "!")) else s + "."
+def _bare(goal: str) -> str:
+    """A goal with its leading determiner dropped, as lists and texts are typed: 'the kettle' -> 'kettle'."""
+    return goal[4:] if goal.startswith("the ") else goal
 
 
-def _cap(s: str) -> str:
-    return s[0].upper() + s[1:]
+_SPOKEN_PAIR = re.compile(r"(?:at \(|position |x=|coords |at |around \()(?P<x>-?\d+(?:\.\d+)?)(?:, ?| y=|/| )"
+                          r"(?P<y>-?\d+(?:\.\d+)?)\)?")
 
 
-def _flatmate(rng, res: list[str], order: str) -> str:
-    ask = _pick(rng, ("could you find it?", "can you go and check on it?", "go and have a look, would you?"))
-    n = len(res)
-    if n == 1:
-        return _pick(rng, (_cap(_end(f"there's {res[0]}, {ask}")),
-                           _cap(_end(f"could you nip over to {res[0]}?")),
-                           _cap(_end(f"I need you at {res[0]}"))))
+def _speaker(rng, res: list[str], order: str) -> str:
+    """Lower case, no punctuation; a coordinate pair as said aloud ('at x 3.5 y 2')."""
+    words = []
+    for r in res:
+        r = _SPOKEN_PAIR.sub(lambda m: f"at x {m.group('x')} y {m.group('y')}", r)
+        words.append(" ".join(r.replace(",", " ").replace("(", " ").replace(")", " ").replace(" - ", " ").split()))
+    lead = _pick(rng, ("okay so um ", "uh ", "hey robot ", ""))
+    verb = _pick(rng, ("go to ", "can you go to ", "i need you to check "))
+    if len(words) == 1:
+        return lead + verb + words[0]
+    joins = (" and then ", " after that ", " and then uh ")
+    s = lead + verb + words[0] + "".join(_pick(rng, joins) + w for w in words[1:])
+    if order == "free":
+        s += _pick(rng, (" doesn't matter what order", " any order is fine", " in whatever order"))
+    return s
+
+
+def _email(rng, res: list[str], order: str) -> str:
+    hello = _pick(rng, ("Hi,", "Hello,", "Good morning,"))
+    ask = _pick(rng, ("Please could the robot attend the following:", "Could you send the robot to:",
+                      "The robot needs to visit:"))
+    bullet = _pick(rng, ("• ", "- ", "* "))
+    body = "\n".join(bullet + r[0].upper() + r[1:] for r in res)
     if order == "strict":
-        k = int(rng.integers(3))
-        if k == 0:
-            s = f"Before anything else, go to {res[0]}."
-            s += "".join(f" After that, {r}." for r in res[1:-1])
-            return _end(s + f" Save {res[-1]} for last")
-        if k == 1 and n == 2:
-            return _cap(_end(f"do {res[0]} before {res[1]}, please"))
-        s = f"Start off at {res[0]}." + "".join(f" From there, make your way to {r}." for r in res[1:-1])
-        return _end(s + f" Finish up at {res[-1]}") + " Order matters."
-    s = f"Could you drop by {res[0]}" + "".join(f"? And while you're at it, {r}" for r in res[1:]) + "?"
-    return _end(s) + _pick(rng, (" No particular order.", " Whatever order you like.", " Order's up to you."))
+        tail = _pick(rng, ("In the order above, please.", "Please keep to this order.", "Order as listed."))
+    else:
+        tail = _pick(rng, ("Any order is fine.", "The order doesn't matter.", "In whatever order suits."))
+    if len(res) == 1:
+        tail = "Many thanks."
+    sign = _pick(rng, ("Kind regards,\nPat", "Thanks,\nSam", "Best,\nJo"))
+    return f"{hello}\n\n{ask}\n{body}\n\n{tail}\n\n{sign}"
 
 
-def _landlord(rng, res: list[str], order: str) -> str:
-    lines = [_cap(r) for r in res]
-    if len(lines) == 1:
-        return _end(f"Check: {lines[0]}")
-    sep = _pick(rng, ("\n", " / ", ". "))
-    if order == "strict":
-        return sep.join(f"{i + 1}. {x}" if sep != ". " else f"({i + 1}) {x}" for i, x in enumerate(lines)) + \
-            _pick(rng, (". Order as listed.", ". In the order given."))
-    return sep.join(lines) + _pick(rng, (". Any order.", ". Order not important."))
+def _checklist(rng, res: list[str], order: str) -> str:
+    head = _pick(rng, ("Robot checklist", "TODO", "Tasks"))
+    if len(res) > 1:
+        head += " (in this order)" if order == "strict" else " (any order)"
+    return head + ":\n" + "\n".join(f"[ ] {_bare(r)}" for r in res)
 
 
-def _engineer(rng, res: list[str], order: str) -> str:
-    n = len(res)
-    if n == 1:
-        return _pick(rng, (f"goto: {res[0]}", f"target = {res[0]}", f"nav to {res[0]}"))
-    if order == "strict":
-        k = int(rng.integers(3))
-        if k == 0:
-            return " -> ".join(res) + " (order: strict)"
-        if k == 1:
-            return " ".join(f"{i + 1}/ {r}" for i, r in enumerate(res)) + " - in sequence"
-        return "seq: " + "; ".join(res)
-    return _pick(rng, ("targets (any order): ", "order: any | ", "unordered: ")) + "; ".join(res)
-
-
-def _grandparent(rng, res: list[str], order: str) -> str:
-    n = len(res)
-    if n == 1:
-        return _cap(_end(f"now dear I want you to go over to {res[0]}"))
-    if order == "strict":
-        sep = ", " if any(" and " in r or "," in r for r in res) else " "
-        s = f"now dear first of all go to {res[0]}" + "".join(f"{sep}and then after that {r}" for r in res[1:-1])
-        s += f"{sep}and then last of all {res[-1]}"
-        return _cap(_end(s))
-    s = f"now dear I'd like you to see to {_and(res)}" if all("," not in r for r in res) else \
-        f"now dear I'd like you to see to {res[0]}" + "".join(f", and also {r}" for r in res[1:])
-    return _cap(_end(s)) + _pick(rng, (" It doesn't matter which you do first.", " Whichever order you please."))
+def _teen(rng, res: list[str], order: str) -> str:
+    items = [_bare(r) if rng.uniform() < 0.7 else r for r in res]
+    s = "go 2 " + items[0] + "".join(_pick(rng, (" thn ", " n then ", " then ")) + r for r in items[1:])
+    if order == "free" and len(res) > 1:
+        s += _pick(rng, (" any order", " whatever order"))
+    return s + _pick(rng, (" ty", " thx", ""))
 
 
 def render_instruction_heldout(rng: np.random.Generator, res: list[str], order: str) -> str:
-    """A whole instruction over rendered goals, left by one of four housemates (a chatty flatmate, a landlord
-    taking inventory, an engineer, a grandparent dictating). Strict texts spell the visiting order out
-    ('Before anything else ... Save X for last', numbered lines, 'A -> B (order: strict)', 'first of all ...
-    and then last of all'); free ones say it is open ('while you're at it', 'Any order.', 'order: any')."""
+    """A whole instruction over rendered goals, by one of four new users (a smart-speaker transcript, an office
+    email, a checklist, a teenager's text). Strict texts keep the goals in visiting order and, in the email and
+    the checklist, say so; free ones say the order is open."""
     res = [r.strip().rstrip(",") for r in res]
     who = int(rng.integers(4))
-    return (_flatmate, _landlord, _engineer, _grandparent)[who](rng, res, order)
+    return (_speaker, _email, _checklist, _teen)[who](rng, res, order)
