@@ -359,6 +359,19 @@ def test_a_wrapped_line_is_not_a_list(text, heads):
         assert len(c.subgoals) == 2
 
 
+@pytest.mark.parametrize("text,heads,room,rel", [
+    ("Go to the lily a few steps from the lounge.", ["lily"], None, "near"),
+    ("Go to the lily from the lounge.", ["lily"], "lounge", None),
+    ("Visit the kiln.\n\nKind regards,\nPat", ["kiln"], None, None),
+    ("The kettle that's switched on\nThe toaster", ["kettle", "toaster"], None, None)])
+def test_round13_leaves_relations_and_names_alone(text, heads, room, rel):
+    """Round 13: "from the ROOM" is the room only where no distance word stands before "from"; a closing and the
+    name under it name nothing; a line ending in a state ("switched on") ends its item."""
+    c = parse_instruction(text)
+    assert [s.target.head for s in c.subgoals] == heads
+    assert c.subgoals[0].room == room and [r.type for r in c.subgoals[0].target.relations] == ([rel] if rel else [])
+
+
 _SOUP = st.sampled_from(
     (string.ascii_lowercase[:6] + " ").split() + "go to the a lamp that is which that's isn't not switched turned on off "
     "plugged in unplugged lit running open one ones , ( ) [ ] ; . - — and then the order is your call whichever "

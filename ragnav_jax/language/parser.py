@@ -145,7 +145,8 @@ _LOC2 = re.compile(
     rf"(?!\s*{UNIT})))"
     r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location)\s+)?"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
-    rf"(?P<x3>{NUM}){_NUM_END}{_METRES}\s*[,/|]\s*(?P<y3>{NUM}){_NUM_END}{_METRES}"
+    rf"(?P<x3>{NUM}){_NUM_END}{_METRES}(?:\s*[,/|]\s*|\s+(?={NUM}{_NUM_END}(?!\s*(?:{UNIT}|[-+]?\.?\d))))"
+    rf"(?P<y3>{NUM}){_NUM_END}{_METRES}"
 )
 
 _S_LEAD = r"(?:\b(?:with|having|that\s+has|which\s+has|whose|where)\s+(?:(?:an?|the|its|their)\s+)?)?"
@@ -424,7 +425,15 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"^(?:(?:hi|hey|hello|ok|okay|right|so|alright|well|um+|uh+|er+|quick\s+one|robot)(?:\s+(?:there|robot|buddy|so|then)"
      r")?\s*[,:!.]?\s+)+", ""),
     # Chat shorthand and words typed without apostrophes: "rn", "plz", "u", "idc", "doesnt", "im".
-    (r"\b(?:rn|asap|lol|thx|ty|tysm)\b", " "),
+    (r"\b(?:rn|asap|lol|thx|ty|tysm|kthx|ta)\b", " "),
+    (r"\b(?:thanks|thank\s+you)(?:\s+(?:so|very)\s+much|\s+a\s+lot)?\s+(?:for\s+(?:your|the|all\s+your|all\s+the)\s+help"
+     r"|in\s+advance)\b\s*[.!,]?", " . "),
+    # Texting: "go 2 the kettle", "thn", "n then", "b4".
+    (r"\b(?P<v>go|get|head|come|drive|move|roll|nip|pop|back)\s+2\b(?!\s*(?:[.,/]\s*\d|°|%|degrees?\b|m\b))", r"\g<v> to"),
+    (r"\b(?:thn|thenn|than\s+(?=(?:the|a|an)\b))", "then "),
+    (r"(?<=[a-z)])\s+n\s+(?=(?:then|the|a|an|also)\b)", " and "),
+    (r"\bb4\b", "before"),
+    (r"\bnxt\b", "next"),
     (r"\b(?:plz|pls|plez|pleaseee*)\b", "please"),
     (r"\b(?:u|ya)\b(?!-)", "you"),
     (r"\bur\b", "your"),
@@ -525,6 +534,14 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # A term of address: "now dear, first go to", "ok love, the kiln", "thanks mate".
     (r"(?:(?<=^)|(?<=[.!?;,:]\s)|(?<=[.!?;,:]))\s*(?:(?:now|ok|okay|right|so|well)\s+)?(?:my\s+)?(?:dear|darling|sweetie|"
      r"sweetheart|honey|love|mate|pal|buddy)\b\s*,?\s*", " "),
+    # A request that introduces a list names nothing: "please could the robot attend the following:", "could you
+    # send the robot to:", "the robot needs to visit:".
+    (r"(?:(?<=^)|(?<=[.;!?]\s)|(?<=[.;!?]))[^.;:!?()]*?\b(?:the\s+following(?:\s+[a-z]+)?|to|visit|attend|check|see\s+to"
+     r"|check\s+on|inspect)\s*:", " ; "),
+    # "the sofa from the living room": in it (not "far from", "away from", "across from").
+    (rf"(?<!far\s)(?<!away\s)(?<!way\s)(?<!across\s)(?<!distance\s)(?<!steps\s)(?<!step\s)(?<!walk\s)(?<!throw\s)"
+     rf"(?<!metres\s)(?<!meters\s)(?<!feet\s)(?<!apart\s)(?<!m\s)\bfrom\s+the\s+(?P<r>(?:[a-z]+\s+)?(?:{'|'.join(sorted(L.ROOM_WORDS))}"
+     r"|[a-z]*room))\b", r"in the \g<r>"),
     # "@" is "at": "the kiln @ (3, 4)", "the loom @ 2.5, 7".
     (r"\s*@\s*", " at "),
     # "x3.5 y2": an axis written against its number.
@@ -1479,9 +1496,17 @@ _NEEDS_MORE = frozenset("a an the my your our to of at in on near by with from i
 
 def _line_break(m: re.Match) -> str:
     last, nxt = m.group("last"), m.group("next")
+    before = m.string[: m.start("last")].split()[-1:]
+    state = last.lower() in ("on", "off") and before and before[0].lower() in ("switched", "turned", "left", "still")
     item = (not nxt[:1].islower() or nxt.lower() in ("the", "a", "an", "my", "your", "our")
-            ) and last.lower().strip("\"'") not in _NEEDS_MORE
+            ) and (last.lower().strip("\"'") not in _NEEDS_MORE or state)
     return f"{last}{' ; ' if item and last[-1:] not in ';,:' else ' '}{nxt}"
+
+
+# A letter's closing on a line of its own, and the name under it: "Kind regards,\nPat", "Thanks,\nSam", "Best".
+_SIGN_OFF = re.compile(r"(?:(?:\r?\n|\r)|(?<=[.!?])[ \t]+)\s*(?:(?:kind|best|warm|many|warmest)\s+)?(?:regards|wishes|thanks|thank\s+you|cheers"
+                       r"|best|sincerely|yours(?:\s+(?:truly|sincerely))?)\s*[,.!]?\s*(?:(?:\r?\n|\r)[^\n\r]{1,30})?\s*$",
+                       re.IGNORECASE)
 
 
 def _normalise(text) -> str:
@@ -1492,7 +1517,7 @@ def _normalise(text) -> str:
     # Degree look-alikes that NFKC would turn into letters: masculine ordinal "º", ring above "˚".
     t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
-    t = _LINE_BREAK.sub(_line_break, t)
+    t = _LINE_BREAK.sub(_line_break, _SIGN_OFF.sub("", t))
     t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
     t = re.sub(r"\s+", " ", t).strip()
     if not t:
