@@ -22,7 +22,8 @@ from ragnav_jax.filenames import name_problem
 
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
 EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
-                  "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen")
+                  "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10",
+                  "unseen")
 
 ROOM_TYPES = (
     "kitchen",
@@ -124,8 +125,8 @@ class EpisodesConfig:
     relation_prob: float = 0.3  # chance of describing a goal by a neighbour even when not needed
     room_prob: float = 0.3  # chance of naming the room even when not needed
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
-    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev9
-    # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev9.py: parser rounds 2-12 were developed
+    split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev10
+    # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev10.py: parser rounds 2-13 were developed
     # against them, each measured first as the held-out set) | unseen (phrasings_heldout.py: the current
     # held-out set, by an author who never read the parser, never developed against);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())

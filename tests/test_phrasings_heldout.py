@@ -1,4 +1,4 @@
-"""The `unseen` held-out templates (set M): every piece of the ground truth is written down.
+"""The `unseen` held-out templates (set N): every piece of the ground truth is written down.
 
 Checked with small readers of their own (words for comparators, numbers, units, coordinates, order cues) that
 share no code with the templates, over random subgoals drawn by hypothesis. Determinism: tests/test_episodes_split.py.
@@ -21,12 +21,11 @@ from ragnav_jax.language.types import Location, Subgoal, Target
 
 SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # M's words for each relation, written here apart from the templates' own table
-M_REL_WORDS = {"near": ("near", "close to", "not far from", "around"), "next_to": ("next to", "adjacent to"),
-               "beside": ("beside", "at the side of"), "by": ("by",), "on": ("on", "sitting on", "on top of"),
-               "under": ("under", "beneath"), "above": ("above", "over"), "in": ("in", "inside"),
-               "with": ("with", "that has", "that have"), "in_room_with": ("in the same room as", "in the room with"),
-               "in_front_of": ("in front of",), "behind": ("behind", "at the back of"),
-               "opposite": ("opposite", "across from"), "left_of": ("left of",), "right_of": ("right of",)}
+N_REL_WORDS = {"near": ("near", "nr", "close of", "close to"), "next_to": ("next to", "nxt to"),
+               "beside": ("beside",), "by": ("by",), "on": ("on", "on the top of", "on top of"), "under": ("under", "below"),
+               "above": ("above", "over"), "in": ("in", "inside of"), "with": ("with", "w/"),
+               "in_room_with": ("in the same room as", "in same room as"), "in_front_of": ("in front of",),
+               "behind": ("behind",), "opposite": ("opposite",), "left_of": ("left of",), "right_of": ("right of",)}
 
 
 def test_split_is_wired():
@@ -48,15 +47,15 @@ def test_goal_writes_every_piece(sg, seed):
         for a in t.attributes:
             assert _has(text, a) or _has(plain, a), (a, text)
         for r in t.relations:
-            assert any(_has(text, w) for w in M_REL_WORDS[r.type]), (r.type, text)
+            assert any(_has(text, w) or (w == "w/" and " w/ " in text) for w in N_REL_WORDS[r.type]), (r.type, text)
     if sg.room:
-        assert _has(text, "the " + sg.room), text
+        assert _has(text, sg.room), text
 
 
 def _comparator(text: str) -> str:
     t = text.lower()
-    for rx, c in ((r"roughly|approx\.|about", "approx"), (r"at least|no less than", "ge"), (r"no more than|at most", "le"),
-                  (r"more than|above|over", "gt"), (r"less than|below|under", "lt")):
+    for rx, c in ((r"approx|around|about", "approx"), (r"minimum|not less than", "ge"), (r"not more than|maximum", "le"),
+                  (r"more than|bigger than|higher than", "gt"), (r"less than|lower than|smaller than", "lt")):
         if re.search(rx, t):
             return c
     return "?"
@@ -69,14 +68,14 @@ def test_sensor_phrase_denotes_the_written_constraint(c, seed):
     text = (prefix + " " + tail).strip()
     assert bool(prefix) != bool(tail) and (written.reading, written.comparator) == (c.reading, c.comparator)
     if c.is_superlative:
-        low = "lowest|coldest|coolest|least|sickest|driest"
+        low = "lowest|coldest|coolest|least|unhealthiest|driest|\\bmin\\b"
         assert written.value is None and read_numbers(text) == [], text
         assert bool(re.search(low, text)) == (c.comparator == "min"), text
         return
     assert written.value == pytest.approx(c.value, abs=0.006)
     assert read_numbers(text.replace("°C", " C")) == [pytest.approx(written.value)], text
     assert _comparator(text) == c.comparator, text
-    unit = "c" if re.search(r"°c|degree|\bdeg\b|\d ?c\b", text.lower()) else "%" if re.search(r"%|percent", text) else ""
+    unit = "c" if re.search(r"°|degree|\bdeg\b|\d ?c\b", text.lower()) else "%" if re.search(r"%|percent", text) else ""
     assert unit == written.unit, text
 
 
@@ -89,12 +88,12 @@ def test_coordinates_read_back_x_then_y(x, y, seed):
     hint = H.hint_text_heldout(rng, xs, ys)
     assert [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", hint)] == [float(xs), float(ys)], hint
     goal = H.render_goal_heldout(rng, Subgoal(0, Target("guitar", "guitar"), location=Location(x, y)), hint=hint)
-    text = H.render_instruction_heldout(rng, [goal], "strict").replace("go 2 ", "go to ")  # the text's "2" for "to"
+    text = H.render_instruction_heldout(rng, [goal], "strict")
     assert [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", text)] == [float(xs), float(ys)], text
 
 
-STRICT_CUES = r"in the order above|keep to this order|order as listed|\(in this order\)"
-FREE_CUES = r"any order|doesn't matter what order|whatever order|order doesn't matter|\(any order\)"
+STRICT_CUES = r"in that order|\(in order\)|^first:|after go to|after you go|then you go"
+FREE_CUES = r"any order|order not important|whichever order|order is not important|order you can choose"
 
 
 @SETTINGS

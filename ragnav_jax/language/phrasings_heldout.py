@@ -1,31 +1,27 @@
-"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set M).
+"""Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set N).
 
-Written in round 12, before any run of it, after the round's parser changes were made on set E (now
-`unseen_dev9`); measured, never developed against. Same four functions, arguments and meanings as the other
-template sets. The style is first messages typed or spoken into a household robot's app by four new users:
+Written in round 13, before any run of it, after that round's parser changes were made on hand-written probes in
+the registers of set M (now `unseen_dev10`); measured, never developed against. Same four functions, arguments
+and meanings as the other template sets. The style is requests from the staff and residents of a care home:
 
-- a smart-speaker transcript: lower case, no punctuation, fillers ("um", "uh", "okay so"), coordinates as
-  said aloud ("at x 4.2 y 7"), goals joined by "and then", "after that";
-- an office manager's email: a greeting, "Please could the robot attend the following:", one bullet a line
-  ("• the boiler (garage)"), "In the order above, please." / "Any order is fine.", a sign-off with a name;
-- a checklist: "[ ]" boxes, one item a line, determiners dropped ("[ ] kettle in kitchen"), "(in this order)";
-- a teenager's text: "2" for "to", "thn" / "n then" between goals, "ty", no capitals, determiners mostly
-  dropped ("go 2 teal bean bag by the crib thn kettle").
+- a nurse's handover note: abbreviations ("pls chk", "nr" for near, "w/" for with, "rm"), "+" between goals
+  that may come in any order, "then" between ordered ones;
+- a resident's polite, hedged request: "I wonder if you might pop along to ...", "if it's no trouble",
+  "whichever order suits you best";
+- an activities coordinator's plan: "First: ... Second: ... Last: ...", "Any order: ...";
+- a carer writing in a second language: "go at", "near of", "after go to", "the order is not important".
 
-Goals: attributes before the noun, or after it as "(the teal one)" / "- the teal one -"; states before the
-noun or after it ("that's on", "which is still open", "that is currently switched off"); the room as "in the
-X", "(in the X)", "from the X"; relations in other words ("adjacent to", "just by", "across from",
-"at the back of", "sitting on", "that has"). Readings: "at least", "no more than", "more than", "less than",
-"roughly", "approx.", "°C", "deg", "degrees C", "%", "% humidity", "percent"; superlatives as "the warmest",
-"the X that's warmest", "the X reading the highest temp". Coordinates: "at (3.5, 2)", "position 3.5, 2",
-"x=3.5 y=2", "coords 3.5/2", "at 3.5 2", spoken "x three point five y two"; always x then y.
+Goals: attributes before the noun or after it ("the sofa, grey one"); states before the noun or after it ("that is
+on", "which is left open"); the room as "in the X", "in X rm", "in X"; relations in other words ("nr", "w/",
+"near of", "close of", "on the top of", "just beside"). Readings: "more than 20 degree", "approx 21C", "bigger
+than 0.5", "higher than 60%", "lower than", "not more than", "minimum", "around"; superlatives as "the warmest",
+"with the max temp", "with the highest humidity". Coordinates: "x 3.5, y 2", "(3.5 ; 2)", "pos. 3.5/2", "at point
+3.5,2", "x:3.5 y:2"; always x then y.
 
 Every draw comes from the NumPy generator passed in, so a seed gives the same text.
 """
 
 from __future__ import annotations
-
-import re
 
 import numpy as np
 
@@ -34,214 +30,159 @@ from ragnav_jax.language.phrasings import number_words
 from ragnav_jax.language.phrasings_dev8 import is_plural, split_attributes
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
-# ----------------------------------------------------------------------------------------------------
-# Relations and anchors
-
 REL_WORDS = {
-    "near": ("near", "close to", "not far from", "around"),
-    "next_to": ("next to", "adjacent to", "right next to"),
-    "beside": ("beside", "at the side of"),
+    "near": ("near", "nr", "near of", "close of", "close to"),
+    "next_to": ("next to", "just next to", "nxt to"),
+    "beside": ("beside", "just beside"),
     "by": ("by", "just by"),
-    "on": ("on", "sitting on", "on top of"),
-    "under": ("under", "beneath"),
+    "on": ("on", "on the top of", "on top of"),
+    "under": ("under", "below"),
     "above": ("above", "over"),
-    "in": ("in", "inside"),
-    "with": ("with", "that has"),
-    "in_room_with": ("in the same room as", "in the room with"),
+    "in": ("in", "inside of"),
+    "with": ("with", "w/"),
+    "in_room_with": ("in the same room as", "in same room as"),
     "in_front_of": ("in front of",),
-    "behind": ("behind", "at the back of"),
-    "opposite": ("opposite", "across from"),
-    "left_of": ("to the left of", "left of"),
-    "right_of": ("to the right of", "right of"),
+    "behind": ("behind",),
+    "opposite": ("opposite", "opposite of"),
+    "left_of": ("to the left of", "on the left of"),
+    "right_of": ("to the right of", "on the right of"),
 }
 
 
-def _rel(rng, r: Relation, plural: bool) -> str:
-    """A relation and its anchor: 'adjacent to the crib', 'that has the work light'."""
-    w = _pick(rng, REL_WORDS[r.type])
-    if w == "that has" and plural:
-        w = "that have"
-    return f"{w} {_anchor(rng, r.anchor)}"
+def _rel(rng, r: Relation) -> str:
+    """A relation and its anchor: 'nr the crib', 'w/ the work light', 'near of the sofa'."""
+    return f"{_pick(rng, REL_WORDS[r.type])} {_anchor(rng, r.anchor)}"
 
 
 def _anchor(rng, t: Target) -> str:
-    """An anchor noun phrase; its own state as a clause, its own relations after 'which is'."""
     pre, states = split_attributes(t)
     s = f"the {t.phrase}" + (f" that is {' and '.join(states)}" if states else "")
     for i, r in enumerate(t.relations):
-        rel = _rel(rng, r, is_plural(t.head))
-        s += (" and" if i else "") + (" " if rel.startswith(("with", "that")) else " which is ") + rel
+        s += (" and " if i else " ") + _rel(rng, r)
     return s
 
 
-# ----------------------------------------------------------------------------------------------------
-# Goals
-
-
 def render_goal_heldout(rng: np.random.Generator, sg: Subgoal, prefix: str = "", tail: str = "", hint: str = "") -> str:
-    """A goal as a new user writes it: 'the teal bean bag (nursery)', 'the bean bag - the teal one - in the
-    nursery', 'the lamp that's on from the study', 'the warmest radiator in the hall', 'the kettle at (3.5, 2)'.
-    Relations come last."""
+    """A goal as the care home writes it: 'the sofa, grey one, in lounge rm', 'the lamp which is left on nr the
+    bed', 'the warmest radiator in hall', 'the kettle x 3.5, y 2'. Relations come last."""
     t = sg.target
     pre, states = split_attributes(t)
     plural = is_plural(t.head)
     head_words = t.phrase[len(t.phrase) - len(t.head):] if t.phrase.endswith(t.head) else t.head
-    state_before = len(states) == 1 and not pre and not prefix and rng.uniform() < 0.4
-    one_after = bool(pre) and not prefix and rng.uniform() < 0.35
+    state_before = len(states) == 1 and not pre and not prefix and rng.uniform() < 0.3
+    one_after = bool(pre) and not prefix and rng.uniform() < 0.3
     out = "the " + (prefix + " " if prefix else "") + (states[0].replace(" ", "-") + " " if state_before else "")
     out += head_words if one_after else t.phrase
     if one_after:
-        out += _pick(rng, (f" (the {' '.join(pre)} {'ones' if plural else 'one'})",
-                           f" - the {' '.join(pre)} {'ones' if plural else 'one'} -"))
+        out += f", {' '.join(pre)} {'ones' if plural else 'one'},"
     if states and not state_before:
-        be = "are" if plural else _pick(rng, ("'s", " is"))
-        out += _pick(rng, (f" that{be}", f" which{' are' if plural else ' is'}")) + _pick(rng, (" ", " still ", " currently ")) \
-            + " and ".join(states)
+        left = "left " if all(x in ("open", "switched on", "switched off") for x in states) and rng.uniform() < 0.4 else ""
+        out += f" {_pick(rng, ('that', 'which'))} {'are' if plural else 'is'} {left}{' and '.join(states)}"
     if hint:
         out += " " + hint
     if tail:
         out += " " + tail
     if sg.room:
-        out += _pick(rng, (f" in the {sg.room}", f" (in the {sg.room})", f" from the {sg.room}", f" in the {sg.room}"))
+        out += _pick(rng, (f" in the {sg.room}", f" in {sg.room} rm" if not sg.room.endswith("room") else f" in {sg.room}",
+                           f" in {sg.room}"))
     for i, r in enumerate(t.relations):
-        out += (" and " if i else " ") + _rel(rng, r, plural)
-    return " ".join(out.split()).rstrip(" -")
+        out += (" and " if i else " ") + _rel(rng, r)
+    return " ".join(out.replace(",,", ",").split()).rstrip(",")
 
 
-# ----------------------------------------------------------------------------------------------------
-# Sensor phrases
-
-_T_UNITS = (("°C", "c"), (" °C", "c"), (" deg", "c"), (" degrees C", "c"), (" degrees", "c"), ("C", "c"))
-_H_UNITS = (("%", "%"), (" percent", "%"), ("% humidity", "%"))
-_CMP = {"gt": ("more than", "above", "over"), "ge": ("at least", "no less than"), "lt": ("less than", "below", "under"),
-        "le": ("no more than", "at most"), "approx": ("roughly", "approx.", "about")}
+_T_UNITS = (("C", "c"), (" degree", "c"), (" degrees", "c"), (" deg", "c"), ("°", "c"))
+_H_UNITS = (("%", "%"), (" percent", "%"), (" %", "%"))
+_CMP = {"gt": ("more than", "bigger than", "higher than"), "ge": ("minimum", "not less than"),
+        "lt": ("lower than", "less than", "smaller than"), "le": ("not more than", "maximum"),
+        "approx": ("approx", "around", "about")}
 _SUPER = {
     ("temperature_c", "max"): ("warmest", "hottest"), ("temperature_c", "min"): ("coldest", "coolest"),
-    ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy", "sickest"),
+    ("ndvi", "max"): ("healthiest", "greenest"), ("ndvi", "min"): ("least healthy", "unhealthiest"),
     ("humidity_pct", "max"): ("most humid", "dampest"), ("humidity_pct", "min"): ("driest", "least humid"),
 }
-_READ = {"temperature_c": ("temp", "temperature"), "ndvi": ("NDVI", "NDVI score"), "humidity_pct": ("humidity",)}
-
-
-def _spoken(rng, v: float, reading: str) -> tuple[str, float]:
-    """(the number as written, its value): digits, or words for whole numbers ('twenty-one')."""
-    txt = _fmt_value(reading, v)
-    val = float(txt)
-    if reading != "ndvi" and val == int(val) and abs(val) < 100 and rng.uniform() < 0.25:
-        return number_words(int(val)), val
-    return txt, val
+_READ = {"temperature_c": "temp", "ndvi": "NDVI", "humidity_pct": "humidity"}
 
 
 def render_sensor_heldout(rng: np.random.Generator, c: SensorConstraint) -> tuple[str, str, SensorConstraint]:
     """(prefix before the noun or '', phrase after the noun or '', the constraint exactly as written).
 
-    Superlatives: 'warmest' before the noun, or after it ('that's warmest', 'reading the highest temp');
-    thresholds after the noun ('with a temp of at least 20°C', 'humidity more than 60%', 'NDVI roughly 0.4',
-    'reading no more than minus eighteen degrees')."""
+    Superlatives: 'warmest' before the noun, or after it ('with the max temp', 'with the highest humidity');
+    thresholds after the noun ('temp more than 20 degree', 'with humidity approx 40%', 'NDVI bigger than
+    0.5', 'temperature not more than minus eighteen degrees')."""
     rd = c.reading
     if c.is_superlative:
-        adj = _pick(rng, _SUPER[(rd, c.comparator)])
-        k = int(rng.integers(3))
-        if k == 0:
-            return adj, "", c
-        if k == 1 and " " not in adj:
-            return "", f"that's {adj}", c
-        hi = "highest" if c.comparator == "max" else "lowest"
-        return "", f"reading the {hi} {_pick(rng, _READ[rd])}", c
-    n, value = _spoken(rng, c.value, rd)
+        if rng.uniform() < 0.5:
+            return _pick(rng, _SUPER[(rd, c.comparator)]), "", c
+        word = _pick(rng, ("max", "highest") if c.comparator == "max" else ("min", "lowest"))
+        return "", f"with the {word} {_READ[rd]}", c
+    txt = _fmt_value(rd, c.value)
+    value = float(txt)
+    if rd != "ndvi" and value == int(value) and abs(value) < 100 and rng.uniform() < 0.2:
+        txt = number_words(int(value))
     cmp = _pick(rng, _CMP[c.comparator])
     if rd == "ndvi":
-        return "", f"{_pick(rng, ('with an NDVI', 'NDVI', 'NDVI score'))} {cmp} {n}", SensorConstraint(rd, c.comparator, value, "")
+        return "", f"{_pick(rng, ('NDVI', 'with NDVI'))} {cmp} {txt}", SensorConstraint(rd, c.comparator, value, "")
     if rd == "temperature_c":
         u, code = _pick(rng, _T_UNITS)
-        if n[0].isalpha():
+        if txt[0].isalpha():
             u = " degrees"
-        lead = _pick(rng, ("with a temp of", "reading", "temp", "at a temperature of"))
-        return "", f"{lead} {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
+        lead = _pick(rng, ("temp", "temperature", "with temperature", "with temp"))
+        return "", f"{lead} {cmp} {txt}{u}", SensorConstraint(rd, c.comparator, value, code)
     u, code = _pick(rng, _H_UNITS)
-    if n[0].isalpha():
+    if txt[0].isalpha():
         u = " percent"
-    if u == "% humidity":
-        return "", f"at {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
-    return "", f"{_pick(rng, ('humidity', 'with humidity'))} {cmp} {n}{u}", SensorConstraint(rd, c.comparator, value, code)
-
-
-# ----------------------------------------------------------------------------------------------------
-# Coordinates
+    return "", f"{_pick(rng, ('humidity', 'with humidity'))} {cmp} {txt}{u}", SensorConstraint(rd, c.comparator, value, code)
 
 
 def hint_text_heldout(rng: np.random.Generator, x: str, y: str) -> str:
-    """A coordinate hint in the scene frame (metres), x then y: 'at (3.5, 2)', 'position 3.5, 2', 'x=3.5 y=2',
-    'coords 3.5/2', 'at 3.5 2'."""
-    return _pick(rng, (f"at ({x}, {y})", f"position {x}, {y}", f"x={x} y={y}", f"coords {x}/{y}", f"at {x} {y}",
-                       f"around ({x},{y})"))
+    """A coordinate hint in the scene frame (metres), x then y: 'x 3.5, y 2', '(3.5 ; 2)', 'pos. 3.5/2', 'at point
+    3.5,2', 'x:3.5 y:2'."""
+    return _pick(rng, (f"x {x}, y {y}", f"({x} ; {y})", f"pos. {x}/{y}", f"at point {x},{y}", f"x:{x} y:{y}"))
 
 
-# ----------------------------------------------------------------------------------------------------
-# Whole instructions
-
-
-def _bare(goal: str) -> str:
-    """A goal with its leading determiner dropped, as lists and texts are typed: 'the kettle' -> 'kettle'."""
-    return goal[4:] if goal.startswith("the ") else goal
-
-
-_SPOKEN_PAIR = re.compile(r"(?:at \(|position |x=|coords |at |around \()(?P<x>-?\d+(?:\.\d+)?)(?:, ?| y=|/| )"
-                          r"(?P<y>-?\d+(?:\.\d+)?)\)?")
-
-
-def _speaker(rng, res: list[str], order: str) -> str:
-    """Lower case, no punctuation; a coordinate pair as said aloud ('at x 3.5 y 2')."""
-    words = []
-    for r in res:
-        r = _SPOKEN_PAIR.sub(lambda m: f"at x {m.group('x')} y {m.group('y')}", r)
-        words.append(" ".join(r.replace(",", " ").replace("(", " ").replace(")", " ").replace(" - ", " ").split()))
-    lead = _pick(rng, ("okay so um ", "uh ", "hey robot ", ""))
-    verb = _pick(rng, ("go to ", "can you go to ", "i need you to check "))
-    if len(words) == 1:
-        return lead + verb + words[0]
-    joins = (" and then ", " after that ", " and then uh ")
-    s = lead + verb + words[0] + "".join(_pick(rng, joins) + w for w in words[1:])
-    if order == "free":
-        s += _pick(rng, (" doesn't matter what order", " any order is fine", " in whatever order"))
-    return s
-
-
-def _email(rng, res: list[str], order: str) -> str:
-    hello = _pick(rng, ("Hi,", "Hello,", "Good morning,"))
-    ask = _pick(rng, ("Please could the robot attend the following:", "Could you send the robot to:",
-                      "The robot needs to visit:"))
-    bullet = _pick(rng, ("• ", "- ", "* "))
-    body = "\n".join(bullet + r[0].upper() + r[1:] for r in res)
-    if order == "strict":
-        tail = _pick(rng, ("In the order above, please.", "Please keep to this order.", "Order as listed."))
-    else:
-        tail = _pick(rng, ("Any order is fine.", "The order doesn't matter.", "In whatever order suits."))
+def _nurse(rng, res: list[str], order: str) -> str:
+    lead = _pick(rng, ("pls chk ", "Pls check ", "pls go to "))
     if len(res) == 1:
-        tail = "Many thanks."
-    sign = _pick(rng, ("Kind regards,\nPat", "Thanks,\nSam", "Best,\nJo"))
-    return f"{hello}\n\n{ask}\n{body}\n\n{tail}\n\n{sign}"
+        return lead + res[0]
+    if order == "strict":
+        return lead + "".join((", then " if i else "") + r for i, r in enumerate(res)) + _pick(rng, (" - in that order", " (in order)"))
+    return lead + " + ".join(res) + _pick(rng, (" (any order)", " - order not important"))
 
 
-def _checklist(rng, res: list[str], order: str) -> str:
-    head = _pick(rng, ("Robot checklist", "TODO", "Tasks"))
-    if len(res) > 1:
-        head += " (in this order)" if order == "strict" else " (any order)"
-    return head + ":\n" + "\n".join(f"[ ] {_bare(r)}" for r in res)
+def _resident(rng, res: list[str], order: str) -> str:
+    s = f"I wonder if you might pop along to {res[0]}"
+    if len(res) == 1:
+        return s + "? Thank you, dear."
+    if order == "strict":
+        mid = "".join(f", and after that, if it's no trouble, {r}" for r in res[1:-1])
+        return s + mid + f", and lastly {res[-1]}. In that order, please."
+    return s + "".join(f", and {r}" for r in res[1:]) + ", in whichever order suits you best."
 
 
-def _teen(rng, res: list[str], order: str) -> str:
-    items = [_bare(r) if rng.uniform() < 0.7 else r for r in res]
-    s = "go 2 " + items[0] + "".join(_pick(rng, (" thn ", " n then ", " then ")) + r for r in items[1:])
-    if order == "free" and len(res) > 1:
-        s += _pick(rng, (" any order", " whatever order"))
-    return s + _pick(rng, (" ty", " thx", ""))
+def _planner(rng, res: list[str], order: str) -> str:
+    if len(res) == 1:
+        return f"Only stop: {res[0]}."
+    if order == "strict":
+        words = ("First", "Second", "Third", "Fourth", "Fifth")
+        return " ".join(f"{'Last' if i == len(res) - 1 else words[i]}: {r}." for i, r in enumerate(res))
+    return "Any order: " + ", ".join(res[:-1]) + " and " + res[-1] + "."
+
+
+def _second_language(rng, res: list[str], order: str) -> str:
+    first = _pick(rng, ("Please go at ", "Please you go to ", "Go at "))
+    if len(res) == 1:
+        return first + res[0] + "."
+    if order == "strict":
+        return first + res[0] + "".join(f", {_pick(rng, ('after go to', 'after you go', 'then you go to'))} {r}"
+                                        for r in res[1:]) + "."
+    return first + res[0] + "".join(f" and {r}" for r in res[1:]) + _pick(rng, (". The order is not important.",
+                                                                              ". Order you can choose."))
 
 
 def render_instruction_heldout(rng: np.random.Generator, res: list[str], order: str) -> str:
-    """A whole instruction over rendered goals, by one of four new users (a smart-speaker transcript, an office
-    email, a checklist, a teenager's text). Strict texts keep the goals in visiting order and, in the email and
-    the checklist, say so; free ones say the order is open."""
+    """A whole instruction over rendered goals, by one of four people of a care home (a nurse's note, a resident,
+    an activities plan, a carer writing in a second language). Strict texts say the order ('then', 'in that
+    order', 'First: ... Last:', 'after go to'); free ones say it is open."""
     res = [r.strip().rstrip(",") for r in res]
     who = int(rng.integers(4))
-    return (_speaker, _email, _checklist, _teen)[who](rng, res, order)
+    return (_nurse, _resident, _planner, _second_language)[who](rng, res, order)
