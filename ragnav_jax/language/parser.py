@@ -428,6 +428,19 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"\b(?:rn|asap|lol|thx|ty|tysm|kthx|ta)\b", " "),
     (r"\b(?:thanks|thank\s+you)(?:\s+(?:so|very)\s+much|\s+a\s+lot)?\s+(?:for\s+(?:your|the|all\s+your|all\s+the)\s+help"
      r"|in\s+advance)\b\s*[.!,]?", " . "),
+    # Note-taking abbreviations: "pls chk", "nr" (near), "w/" (with), "pos." (position), "rm" (room), "+" between
+    # goals; and prepositions said the way second-language writers often do: "near of", "close of", "on the top of".
+    (r"\bchk\b", "check"),
+    (r"\bnr\b(?=\s+(?:the|a|an|my|your|our|\d|\())", "near"),
+    (r"(?<![\w/])w/\s*(?=[a-z])", "with "),
+    (r"\bpos\.?(?=\s*[(\[]?\s*[-+]?\.?\d)", "position "),
+    (rf"\b(?P<r>{'|'.join(sorted(L.ROOM_WORDS))})\s+rm\b", r"\g<r>"),
+    (r"\b(?P<r>[a-z]+)\s+rm\b", r"\g<r> room"),
+    (r"\s+\+\s+(?=(?:the|a|an|my|your|our)\b)", " , "),
+    (r"\b(?P<p>near|close)\s+of\b", lambda m: "near" if m.group("p") == "near" else "close to"),
+    (r"\bopposite\s+of\b", "opposite"),
+    (r"\bon\s+the\s+top\s+of\b", "on top of"),
+    (r",\s*after\s+(?=(?:go|visit|check|head|drive)\b)", ", then "),
     # Texting: "go 2 the kettle", "thn", "n then", "b4".
     (r"\b(?P<v>go|get|head|come|drive|move|roll|nip|pop|back)\s+2\b(?!\s*(?:[.,/]\s*\d|°|%|degrees?\b|m\b))", r"\g<v> to"),
     (r"\b(?:thn|thenn|than\s+(?=(?:the|a|an)\b))", "then "),
