@@ -127,8 +127,9 @@ class EpisodesConfig:
     synonym_prob: float = 0.3  # chance of a synonym for the category name (couch, TV, bedside table, ...)
     split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev10
     # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev10.py: parser rounds 2-13 were developed
-    # against them, each measured first as the held-out set) | unseen (phrasings_heldout.py: the current
-    # held-out set, by an author who never read the parser, never developed against);
+    # against them, each measured first as the held-out set) | unseen (phrasings_heldout.py, set N: the
+    # held-out set of round 13, measured fresh, then developed against in round 14; the next parser change
+    # needs a new held-out set written before it);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):

@@ -1,7 +1,8 @@
 """Held-out phrasings: goal, sensor, coordinate and instruction templates for the `unseen` split (set N).
 
 Written in round 13, before any run of it, after that round's parser changes were made on hand-written probes in
-the registers of set M (now `unseen_dev10`); measured, never developed against. Same four functions, arguments
+the registers of set M (now `unseen_dev10`); measured fresh with the round-13 parser (closed loop from a frozen
+copy of that commit), then parser round 14 was written on hand-written probes in its registers. Same four functions, arguments
 and meanings as the other template sets. The style is requests from the staff and residents of a care home:
 
 - a nurse's handover note: abbreviations ("pls chk", "nr" for near, "w/" for with, "rm"), "+" between goals
