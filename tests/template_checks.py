@@ -1,0 +1,70 @@
+"""Checks shared by the tests of template sets M and N: each takes the set's own functions and its own words (relation
+words, comparator readers, order cues), so the readers stay independent of the templates they check."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+from test_phrasings_dev8 import _all_targets, _has, read_numbers
+
+from ragnav_jax.language.types import Location, Subgoal, Target
+
+_NUMBER = r"-?\d+(?:\.\d+)?"
+
+
+def check_goal(text: str, sg: Subgoal, rel_words: dict, room: str) -> None:
+    """Every head, attribute, relation (one of rel_words[type]) and the room (`room` formatted with it) is written."""
+    plain = text.replace("-", " ")  # "switched-on" before a noun
+    assert text.startswith("the ") and not text.endswith("-")
+    for t in _all_targets(sg.target):
+        assert _has(text, t.head), (t.head, text)
+        for a in t.attributes:
+            assert _has(text, a) or _has(plain, a), (a, text)
+        for r in t.relations:
+            assert any(_has(text, w) or (w.endswith("/") and f" {w} " in text) for w in rel_words[r.type]), (r.type, text)
+    if sg.room:
+        assert _has(text, room.format(sg.room)), text
+
+
+def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str) -> None:
+    """The phrase names the constraint it says it wrote: the number, the comparator (read by `comparator`), the unit;
+    a superlative names no number and says low (regex `low`) exactly when it is a minimum."""
+    prefix, tail, written = rendered
+    text = (prefix + " " + tail).strip()
+    assert bool(prefix) != bool(tail) and (written.reading, written.comparator) == (c.reading, c.comparator)
+    if c.is_superlative:
+        assert written.value is None and read_numbers(text) == [], text
+        assert bool(re.search(low, text)) == (c.comparator == "min"), text
+        return
+    assert written.value == pytest.approx(c.value, abs=0.006)
+    assert read_numbers(text.replace("°C", " C")) == [pytest.approx(written.value)], text
+    assert comparator(text) == c.comparator, text
+    unit = "c" if re.search(unit_c, text.lower()) else "%" if re.search(r"%|percent", text) else ""
+    assert unit == written.unit, text
+
+
+def check_coordinates(hint_text, render_goal, render_instruction, x: float, y: float, seed: int, as_read=lambda t: t) -> None:
+    """The hint, and the whole one-goal instruction (as_read undoes the set's own shorthand), hold x then y."""
+    xs, ys = (f"{v:.1f}" for v in (x + 0.0, y + 0.0))
+    rng = np.random.default_rng(seed)
+    hint = hint_text(rng, xs, ys)
+    assert [float(v) for v in re.findall(_NUMBER, hint)] == [float(xs), float(ys)], hint
+    goal = render_goal(rng, Subgoal(0, Target("guitar", "guitar"), location=Location(x, y)), hint=hint)
+    text = as_read(render_instruction(rng, [goal], "strict"))
+    assert [float(v) for v in re.findall(_NUMBER, text)] == [float(xs), float(ys)], text
+
+
+def check_order(render_goal, render_instruction, sgs, seed: int, strict: bool, strict_cues: str, free_cues: str) -> None:
+    """A free instruction says so and says no strict cue; a strict one says no free cue; heads come in visiting order."""
+    rng = np.random.default_rng(seed)
+    res = [render_goal(rng, sg) for sg in sgs]
+    low = render_instruction(rng, res, "strict" if strict else "free").lower()
+    assert not re.search(free_cues, low) if strict else re.search(free_cues, low), low
+    if not strict:
+        assert not re.search(strict_cues, low), low
+    at = 0
+    for sg in sgs:
+        at = low.find(sg.target.head, at)
+        assert at >= 0, (sg.target.head, low)
