@@ -363,10 +363,14 @@ def test_a_wrapped_line_is_not_a_list(text, heads):
     ("Go to the lily a few steps from the lounge.", ["lily"], None, "near"),
     ("Go to the lily from the lounge.", ["lily"], "lounge", None),
     ("Visit the kiln.\n\nKind regards,\nPat", ["kiln"], None, None),
-    ("The kettle that's switched on\nThe toaster", ["kettle", "toaster"], None, None)])
+    ("The kettle that's switched on\nThe toaster", ["kettle", "toaster"], None, None),
+    ("Honey jar on the shelf", ["honey jar"], None, "on"),
+    ("Love seat by the window, then the lamp", ["love seat", "lamp"], None, "by"),
+    ("Dear, could you check the kettle?", ["kettle"], None, None)])
 def test_round13_leaves_relations_and_names_alone(text, heads, room, rel):
-    """Round 13: "from the ROOM" is the room only where no distance word stands before "from"; a closing and the
-    name under it name nothing; a line ending in a state ("switched on") ends its item."""
+    """Rounds 12-13: "from the ROOM" is the room only where no distance word stands before "from"; a closing and
+    the name under it name nothing; a line ending in a state ("switched on") ends its item; a term of address goes
+    only after "now", "ok", ... or before a comma ("honey jar" and "love seat" stay names)."""
     c = parse_instruction(text)
     assert [s.target.head for s in c.subgoals] == heads
     assert c.subgoals[0].room == room and [r.type for r in c.subgoals[0].target.relations] == ([rel] if rel else [])

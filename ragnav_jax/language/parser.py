@@ -432,7 +432,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # goals; and prepositions said the way second-language writers often do: "near of", "close of", "on the top of".
     (r"\bchk\b", "check"),
     (r"\bnr\b(?=\s+(?:the|a|an|my|your|our|\d|\())", "near"),
-    (r"(?<![\w/])w/\s*(?=[a-z])", "with "),
+    (r"(?<![\w/])w/\s*(?=[a-z])(?!o\b)", "with "),
     (r"\bpos\.?(?=\s*[(\[]?\s*[-+]?\.?\d)", "position "),
     (rf"\b(?P<r>{'|'.join(sorted(L.ROOM_WORDS))})\s+rm\b", r"\g<r>"),
     (r"\b(?P<r>[a-z]+)\s+rm\b", r"\g<r> room"),
@@ -443,7 +443,7 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r",\s*after\s+(?=(?:go|visit|check|head|drive)\b)", ", then "),
     # Texting: "go 2 the kettle", "thn", "n then", "b4".
     (r"\b(?P<v>go|get|head|come|drive|move|roll|nip|pop|back)\s+2\b(?!\s*(?:[.,/]\s*\d|°|%|degrees?\b|m\b))", r"\g<v> to"),
-    (r"\b(?:thn|thenn|than\s+(?=(?:the|a|an)\b))", "then "),
+    (r"\bthn\b", "then"),
     (r"(?<=[a-z)])\s+n\s+(?=(?:then|the|a|an|also)\b)", " and "),
     (r"\bb4\b", "before"),
     (r"\bnxt\b", "next"),
@@ -545,8 +545,10 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # Asides that ask for nothing: "and while you're at it, the loom", "whilst you're there, the lamp".
     (r",?\s*\b(?:and\s+)?(?:while|whilst)\s+(?:you're|you\s+are)\s+(?:at\s+it|there|over\s+there|passing)\b\s*,?", " and "),
     # A term of address: "now dear, first go to", "ok love, the kiln", "thanks mate".
-    (r"(?:(?<=^)|(?<=[.!?;,:]\s)|(?<=[.!?;,:]))\s*(?:(?:now|ok|okay|right|so|well)\s+)?(?:my\s+)?(?:dear|darling|sweetie|"
-     r"sweetheart|honey|love|mate|pal|buddy)\b\s*,?\s*", " "),
+    # Said after "now", "ok", ... or followed by a comma, so "honey jar" and "love seat" stay names.
+    (r"(?:(?<=^)|(?<=[.!?;,:]\s)|(?<=[.!?;,:]))\s*(?:(?:now|ok|okay|right|so|well)\s+(?:my\s+)?(?:dear|darling|sweetie|"
+     r"sweetheart|honey|love|mate|pal|buddy)\b\s*,?|(?:my\s+)?(?:dear|darling|sweetie|sweetheart|honey|love|mate|pal|buddy)"
+     r"\s*,)\s*", " "),
     # A request that introduces a list names nothing: "please could the robot attend the following:", "could you
     # send the robot to:", "the robot needs to visit:".
     (r"(?:(?<=^)|(?<=[.;!?]\s)|(?<=[.;!?]))[^.;:!?()]*?\b(?:the\s+following(?:\s+[a-z]+)?|to|visit|attend|check|see\s+to"
