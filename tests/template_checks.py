@@ -1,4 +1,4 @@
-"""Checks shared by the tests of template sets M and N: each takes the set's own functions and its own words (relation
+"""Checks shared by the tests of template sets M, N and O: each takes the set's own functions and its own words (relation
 words, comparator readers, order cues), so the readers stay independent of the templates they check."""
 
 from __future__ import annotations
