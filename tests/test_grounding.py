@@ -144,3 +144,16 @@ def test_a_repaired_head_is_a_run_of_content_words_of_head_or_span(verifier, hea
 def test_goals_named_as_the_memory_names_them_are_unchanged(verifier, names):
     sgs = tuple(dataclasses.replace(goal(n, f"go to the {n}"), index=i) for i, n in enumerate(names))
     assert ground_subgoals(verifier, sgs, VOCAB) == (sgs, ())
+
+
+@pytest.mark.parametrize("phrase,text,want", [
+    ("sofa close of the chest freezer", "the sofa close of the chest freezer", "sofa"),
+    ("sofa w the bonsai tree", "the sofa w/ the bonsai tree", "sofa"),
+    ("table saw from the chest freezer", "the table saw from the chest freezer", "table saw"),
+    ("condition of the shelf unit", "verify the condition of the shelf unit", "shelf unit"),  # no name comes first
+])
+def test_a_misread_head_is_the_name_that_comes_first(verifier, phrase, text, want):
+    """A noun phrase's head comes before what modifies it: of two names run into one head by a relation the
+    parser did not know, the first is the goal (the longer 'chest freezer' no longer wins over 'sofa')."""
+    g = ground_subgoal(verifier, goal(phrase, text), VOCAB)
+    assert g is not None and g.target.head == want

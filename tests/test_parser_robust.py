@@ -588,3 +588,55 @@ def test_later_rounds_leave_ordinary_phrases_alone(text, head, rel):
     sg = parse_instruction(text).subgoals[0]
     assert sg.target.head == head
     assert [r.type for r in sg.target.relations] == ([rel] if rel else [])
+
+
+# ----------------------------------------------------------------------------------------------------
+# Round 15: items run together (a symbol the parser gives no meaning to, or no word at all between them)
+
+_ITEMS = ["samovar", "hatstand", "gramophone", "spinning wheel", "tea caddy", "weather vane", "music box", "loom"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(items=st.lists(st.sampled_from(_ITEMS), min_size=2, max_size=4, unique=True),
+       sep=st.sampled_from(["|", "~", ">", "#", "+", "✓", "⇒", "»", "×", "||", "~>", ";", "•", "->"]),
+       article=st.booleans())
+def test_a_symbol_between_items_separates_them(items, sep, article):
+    """A symbol standing alone between two items never joins their words into one name: each item is a goal."""
+    text = f" {sep} ".join(("the " if article else "") + x for x in items)
+    assert [s.target.head for s in parse_instruction(text).subgoals] == items
+
+
+@pytest.mark.parametrize("text, reading", [("the samovar with temp > 20 degrees", ("temperature_c", "gt", 20.0)),
+                                           ("the samovar with temp > twenty degrees", ("temperature_c", "gt", 20.0)),
+                                           ("the fern, ndvi < 0.4", ("ndvi", "lt", 0.4))])
+def test_a_comparator_before_a_number_stays_a_comparator(text, reading):
+    (sg,) = parse_instruction(text).subgoals
+    assert [(c.reading, c.comparator, c.value) for c in sg.sensors] == [reading]
+
+
+@settings(max_examples=40, deadline=None)
+@given(items=st.lists(st.sampled_from(_ITEMS), min_size=2, max_size=4, unique=True),
+       glue=st.sampled_from(["", " also", " too", " additionally"]))
+def test_items_with_no_word_between_are_two_goals(items, glue):
+    """'the loom the music box': a noun phrase holds no article after its noun, so a second article starts the
+    next item (a glue word before it is not part of the name)."""
+    text = f"{glue} ".join(f"the {x}" for x in items)
+    assert [s.target.head for s in parse_instruction(text).subgoals] == items
+
+
+@pytest.mark.parametrize("text, heads", [
+    ("the hatstand the oak one near the umbrella bin", [("hatstand", ["oak"])]),   # an apposition, not two goals
+    ("the loom in the attic the spinning wheel", [("loom", []), ("spinning wheel", [])]),
+    ("in the attic the loom by the window", [("loom", [])]),                          # a room first is the room
+])
+def test_run_together_items_and_appositions(text, heads):
+    assert [(s.target.head, sorted(s.target.attributes)) for s in parse_instruction(text).subgoals] == heads
+
+
+@pytest.mark.parametrize("text", ["go to the room the samovar is in", "the chair the cat sleeps on",
+                                  "there's the samovar, could you find it?", "the garage for the gramophone",
+                                  "the ivory kettle in same room as the samovar"])
+def test_an_article_after_a_function_word_or_before_an_object_relative_splits_nothing(text):
+    """Only an article straight after a noun's words starts a second item: not after 'as', 'for', "there's",
+    nor where the second noun phrase is an object relative ('the room the samovar is in')."""
+    assert len(parse_instruction(text).subgoals) == 1

@@ -110,6 +110,12 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | 
     fit, misread = float(name_fit(verifier, [head], vocab)[0]), _closed_in(head)
     if fit < 1.0 and (fit < p.tau_head or misread):
         best, score = _best(verifier, candidate_heads(head), vocab)
+        runs = content_runs(head)
+        if misread and len(runs) > 1:  # a noun phrase's head comes before what modifies it ("the cello close of
+            # the shelving unit", "the tool chest from the garage"): a name in the first run of words wins
+            first, fs = _best(verifier, candidate_heads(" ".join(runs[0])), vocab)
+            if fs >= p.tau_ground:
+                best, score = first, fs
         if score < p.tau_ground and misread:  # nothing in the head: the words around it in its span, less
             # those of its anchors and room (another object's name there is not this goal's)
             taken = set(_WORD.findall(" ".join([sg.room or "", *_anchor_phrases(t)])))

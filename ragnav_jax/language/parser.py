@@ -435,7 +435,10 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     (r"(?<![\w/])w/\s*(?=[a-z])(?!o\b)", "with "),
     (r"\bpos\.?(?=\s*[(\[]?\s*[-+]?\.?\d)", "position "),
     (r"\b(?P<r>[a-z]+)\s+rm\b", lambda m: m.group("r") + ("" if m.group("r") in L.ROOM_WORDS else " room")),
-    (r"\s+\+\s+(?=(?:the|a|an|my|your|our)\b)", " , "),
+    # A symbol standing alone between words that the parser gives no meaning to ("+", "|", "~", ">", "#", "✓",
+    # "⇒") separates two items: it never joins their words into one name. Symbols that mean something keep it:
+    # "&", "@", "/", "*", "-", "=" (is), units, brackets and stops; a comparator or sign before a number ("> 20").
+    (rf"(?<=[^\W_])\s+(?![&@/*'\"`°%=≈-])[^\w\s(),;:!?.\[\]'\"`⟪⟫]+\s+(?=(?!(?:{_NW_ALT})\b)[^\W\d_])", " , "),
     (r"\b(?P<p>near|close)\s+of\b", lambda m: "near" if m.group("p") == "near" else "close to"),
     (r"\bopposite\s+of\b", "opposite"),
     (r"\bon\s+the\s+top\s+of\b", "on top of"),
@@ -1539,6 +1542,59 @@ def _normalise(text) -> str:
     return t
 
 
+_ARTICLES = ("the", "a", "an")
+_RELATIVES = frozenset("that which who whose".split())
+_GLUE = frozenset("also too plus additionally".split())  # said between two items the parser has no word for
+
+
+def _glued(piece: _Piece) -> list[list[str]]:
+    """The word lists of a parsed segment's phrases (its noun, its anchors', its room) that hold an article after
+    their first word: no noun phrase does, so two items ran together where the parser knew no word between them
+    ("the sofa the lamp", "the craft room the music stand", "the sofa also the lamp")."""
+    out: list[list[str]] = []
+
+    def walk(node: _Node | None) -> None:
+        if node is not None:
+            out.append(node.words)
+            for _, a in node.relations:
+                walk(a)
+
+    walk(piece.node)
+    for _, a in piece.relations:
+        walk(a)
+    out += [piece.room.split()] if piece.room else []
+    return [w for w in out if any(x in _ARTICLES for x in w[1:-1])]
+
+
+def _unglue(seg: str, marks: _Marks) -> list[str]:
+    """A segment cut before each article that starts a second item inside one of its parsed phrases (`_glued`),
+    less the glue words before the cut. Not where what follows is an object relative or ends in a preposition
+    ("the room the lamp is in", "the chair the cat sleeps on"): there the second noun phrase belongs to the first."""
+    glued = _glued(_parse_segment(seg, marks, ""))
+    if not glued:
+        return [seg]
+    toks = [m for m in _TOKEN.finditer(seg) if not m.group(0).startswith("⟪")]
+    words = [m.group(0) for m in toks]
+    for w in glued:
+        for k in range(1, len(w) - 1):
+            j = next((i for i in range(k - 1, -1, -1) if w[i] not in _GLUE), 0)
+            if w[k] not in _ARTICLES or w[j] in L.CLOSED_CLASS or "'" in w[j]:
+                continue  # "same room as the", "there's the": the article opens the phrase of a word before it
+            for p in range(k - j, len(words) - 1):
+                if words[p - (k - j) : p + 2] != w[j : k + 2]:
+                    continue
+                rest = words[p + 1 :]
+                cop = next((i for i, x in enumerate(rest) if x in L.TRUE_COPULAS), None)
+                if (rest and rest[-1] in L.CLOSED_CLASS and rest[-1] not in ("one", "ones")) or (
+                        cop is not None and not _RELATIVES & set(rest[:cop])):
+                    continue
+                head = seg[: toks[p].start()]
+                head = re.sub(rf"(?:\s+(?:{'|'.join(_GLUE)}))+\s*$", " ", head)
+                if head.strip():
+                    return [head, *_unglue(seg[toks[p].start():], marks)]
+    return [seg]
+
+
 def parse_instruction(text: str) -> TaskChain:
     """Parses a free-text multi-goal instruction into a TaskChain; raises ParseError on bad input."""
     s = _normalise(text)
@@ -1564,6 +1620,8 @@ def parse_instruction(text: str) -> TaskChain:
     parts = _SPLIT.split(s)
     # re.split with one named group yields [seg, connector, seg, connector, ...]
     segments = [(parts[k - 1].strip() if k else "", parts[k]) for k in range(0, len(parts), 2)]
+    # Two items run together with no word the parser knows between them are two segments.
+    segments = [(c if i == 0 else ",", piece) for c, seg in segments for i, piece in enumerate(_unglue(seg, marks))]
     kept = [k for k, (_, seg) in enumerate(segments) if seg.strip()]
     pieces = [_parse_segment(segments[k][1], marks, re.sub(r"\s+", " ", segments[k][0])) for k in kept]
     # A colon between a segment and the next, whatever list mark follows it ("jobs for today:\n- the kiln").
