@@ -23,7 +23,7 @@ from ragnav_jax.filenames import name_problem
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
 EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                   "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10",
-                  "unseen_dev11", "unseen")
+                  "unseen_dev11", "unseen_dev12", "unseen")
 
 ROOM_TYPES = (
     "kitchen",
@@ -128,9 +128,10 @@ class EpisodesConfig:
     split: str = "seen"  # sentence templates: seen (the generator's own) | unseen_dev .. unseen_dev10
     # (language/phrasings.py, phrasings_dev2.py .. phrasings_dev10.py: parser rounds 2-13 were developed
     # against them, each measured first as the held-out set) | unseen_dev11 (phrasings_dev11.py, set N: the
-    # held-out set of round 13, measured fresh, then developed against in round 14) | unseen
-    # (phrasings_heldout.py, set O: written before any parser change after round 14, by an author who never
-    # read the parser);
+    # held-out set of round 13, measured fresh, then developed against in round 14) | unseen_dev12
+    # (phrasings_dev12.py, set O: written before any parser change after round 14, by an author who never read
+    # the parser; measured fresh with rounds 14 and 15, then developed against in round 16) | unseen
+    # (phrasings_heldout.py, set P: written before round 16 was measured, by an author who never read the parser);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):

@@ -1,5 +1,5 @@
-"""Checks shared by the tests of template sets M, N and O: each takes the set's own functions and its own words (relation
-words, comparator readers, order cues), so the readers stay independent of the templates they check."""
+"""Checks shared by the tests of template sets M, N, O and P: each takes the set's own functions and its own words
+(relation words, comparator readers, order cues), so the readers stay independent of the templates they check."""
 
 from __future__ import annotations
 
@@ -28,9 +28,10 @@ def check_goal(text: str, sg: Subgoal, rel_words: dict, room: str) -> None:
         assert _has(text, room.format(sg.room)), text
 
 
-def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str) -> None:
-    """The phrase names the constraint it says it wrote: the number, the comparator (read by `comparator`), the unit;
-    a superlative names no number and says low (regex `low`) exactly when it is a minimum."""
+def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str, unit_pct: str = r"%|percent") -> None:
+    """The phrase names the constraint it says it wrote: the number, the comparator (read by `comparator`), the unit
+    (regexes `unit_c`, `unit_pct`); a superlative names no number and says low (regex `low`) exactly when it is a
+    minimum."""
     prefix, tail, written = rendered
     text = (prefix + " " + tail).strip()
     assert bool(prefix) != bool(tail) and (written.reading, written.comparator) == (c.reading, c.comparator)
@@ -41,7 +42,7 @@ def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str) -> None:
     assert written.value == pytest.approx(c.value, abs=0.006)
     assert read_numbers(text.replace("°C", " C")) == [pytest.approx(written.value)], text
     assert comparator(text) == c.comparator, text
-    unit = "c" if re.search(unit_c, text.lower()) else "%" if re.search(r"%|percent", text) else ""
+    unit = "c" if re.search(unit_c, text.lower()) else "%" if re.search(unit_pct, text) else ""
     assert unit == written.unit, text
 
 

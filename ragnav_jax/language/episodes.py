@@ -792,15 +792,17 @@ def render_instruction(rng, res: list[str], order: str) -> str:
 
 
 # episodes.split -> (module of ragnav_jax.language, suffix of its four functions). The parser was developed
-# against the unseen_dev sets in rounds 2 to 14, each first measured as the held-out set; unseen_dev11 (set N)
-# was held out for round 13 and developed against in round 14; `unseen` (set O) was written after round 14,
-# before any parser change, by an author who never read the parser.
+# against the unseen_dev sets in rounds 2 to 14 and 16, each first measured as the held-out set; unseen_dev11 (set N)
+# was held out for round 13 and developed against in round 14; unseen_dev12 (set O) was written after round 14,
+# measured fresh with parser rounds 14 and 15 and developed against in round 16; `unseen` (set P) was written
+# before round 16 was measured, by an author who never read the parser.
 UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phrasings_dev2", "dev2"),
                     "unseen_dev3": ("phrasings_dev3", "dev3"), "unseen_dev4": ("phrasings_dev4", "dev4"),
                     "unseen_dev5": ("phrasings_dev5", "dev5"), "unseen_dev6": ("phrasings_dev6", "dev6"),
                     "unseen_dev7": ("phrasings_dev7", "dev7"), "unseen_dev8": ("phrasings_dev8", "dev8"),
                     "unseen_dev9": ("phrasings_dev9", "dev9"), "unseen_dev10": ("phrasings_dev10", "dev10"),
-                    "unseen_dev11": ("phrasings_dev11", "dev11"), "unseen": ("phrasings_heldout", "heldout")}
+                    "unseen_dev11": ("phrasings_dev11", "dev11"), "unseen_dev12": ("phrasings_dev12", "dev12"),
+                    "unseen": ("phrasings_heldout", "heldout")}
 
 
 def _renderer(split: str, what: str):

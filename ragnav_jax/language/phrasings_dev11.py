@@ -1,11 +1,11 @@
 """Phrasings of set N: goal, sensor, coordinate and instruction templates for the `unseen_dev11` split.
 
-Held out for round 13, developed against in round 14; moved to this development split when set O
-(`phrasings_heldout.py`) took its place as `unseen`. Written in round 13, before any run of it, after that round's
-parser changes were made on hand-written probes in the registers of set M (now `unseen_dev10`); measured fresh
-with the round-13 parser (closed loop from a frozen copy of that commit), then parser round 14 was written on
-hand-written probes in its registers. Same four functions, arguments and meanings as the other template sets.
-The style is requests from the staff and residents of a care home:
+Held out for round 13, developed against in round 14; moved to this development split when set O (then
+`phrasings_heldout.py`, now `phrasings_dev12.py`) took its place as `unseen`. Written in round 13, before any run of
+it, after that round's parser changes were made on hand-written probes in the registers of set M (now
+`unseen_dev10`); measured fresh with the round-13 parser (closed loop from a frozen copy of that commit), then
+parser round 14 was written on hand-written probes in its registers. Same four functions, arguments and meanings
+as the other template sets. The style is requests from the staff and residents of a care home:
 
 - a nurse's handover note: abbreviations ("pls chk", "nr" for near, "w/" for with, "rm"), "+" between goals
   that may come in any order, "then" between ordered ones;
