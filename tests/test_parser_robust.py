@@ -640,3 +640,37 @@ def test_an_article_after_a_function_word_or_before_an_object_relative_splits_no
     """Only an article straight after a noun's words starts a second item: not after 'as', 'for', "there's",
     nor where the second noun phrase is an object relative ('the room the samovar is in')."""
     assert len(parse_instruction(text).subgoals) == 1
+
+
+# ----------------------------------------------------------------------------------------------------
+# Round 16 (developed on set O after its fresh runs): brackets after an anchor, axis after each number, "stood"
+
+
+def _anchors(text: str) -> list[tuple]:
+    return [(s.target.head, [(r.type, r.anchor.head, r.anchor.attributes, [(q.type, q.anchor.head) for q in r.anchor.relations])
+                             for r in s.target.relations]) for s in parse_instruction(text).subgoals]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the samovar by the hatstand (the one near the door), then the loom",
+     [("samovar", [("by", "hatstand", (), [("near", "door")])]), ("loom", [])]),
+    ("the samovar next to the shelves (the ones a few steps from the loom)",
+     [("samovar", [("next_to", "shelves", (), [("near", "loom")])])]),
+    ("the samovar by the hatstand (the oak one)", [("samovar", [("by", "hatstand", ("oak",), [])])]),
+    ("the fern (the one by the window)", [("fern", [("by", "window", (), [])])]),   # no anchor before: the goal's
+])
+def test_brackets_straight_after_an_anchor_describe_the_anchor(text, expected):
+    assert _anchors(text) == expected
+
+
+@pytest.mark.parametrize("text, xy", [("the samovar at 11.8 m on x and 4.4 m on y", (11.8, 4.4)),
+                                      ("the samovar 3 metres along the x axis and 2 metres along the y axis", (3.0, 2.0)),
+                                      ("the samovar at 7.9 along and 8.5 up", (7.9, 8.5)),
+                                      ("the samovar at 2 across, 3 up", (2.0, 3.0))])
+def test_each_number_followed_by_its_axis(text, xy):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == "samovar" and (sg.location.x, sg.location.y) == xy
+
+
+def test_stood_before_a_relation_is_no_part_of_the_name():
+    assert _anchors("the samovar stood by the hatstand") == [("samovar", [("by", "hatstand", (), [])])]

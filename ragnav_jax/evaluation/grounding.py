@@ -15,10 +15,19 @@ against the memory of the house:
   room's words), that fits a recorded name best (a name itself scores 1) when that fit reaches
   `tau_ground` (fitted on the seen split: a goal's head against the other words of seen-template
   instructions, `fitting.ground_rows`) and beats the head's own; a head no recorded name reaches
-  (cosine below the verifier's `tau_head`) is replaced likewise by a run of its own words;
-- a misread head below `tau_head` with no such run is dropped: the verifier could confirm no object for
-  it (its name check needs that cosine), and the misreading says it is no goal; the dropped phrases are
-  reported (`ungrounded` in the episode rows). A head of content words only stays a goal, found or not;
+  (cosine below the verifier's `tau_head`) is replaced likewise by a run of its own words.
+  A misread head's name is looked for in its first run of words first: a noun phrase's head comes before
+  what modifies it ("the cello close of the shelving unit" is the cello);
+- a head below `tau_head` with no such run names nothing the memory knows (a title, a heading, a remark,
+  an aside: "the household trials", "ln item", "stick to it"): the verifier could confirm no
+  object for it (its name check needs that cosine). Where it is placed against an object the memory knows
+  ("thy trial awaits at the spider plant", "on my way to the shelf unit"; not "in", what holds it), that
+  object is the goal; otherwise the goal is dropped and reported (`ungrounded` in the episode rows). A
+  goal measured by a sensor or with a generic head ("thing") stays: the reading singles its object out;
+- a goal that is only words the memory describes things with and names nothing by ("the amp, retro" read
+  as a goal "retro") gives them to the goal before it as attributes; one that is only a room name the
+  memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it to the goal
+  before it as its room;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
   lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
   memory ever said it ('required' from "no further action is required", 'noted', 'requested').
@@ -37,7 +46,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ragnav_jax.evaluation.verify import recorded, said, vocabulary
-from ragnav_jax.language.lexicon import CLOSED_CLASS, is_modifier
+from ragnav_jax.language.lexicon import CLOSED_CLASS, GENERIC_HEADS, is_modifier, is_room_phrase
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -122,7 +131,14 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | 
             best, score = _best(verifier, [x for x in candidate_heads(sg.text) if not set(x.split()) & taken], vocab)
         if score >= p.tau_ground and score > fit:
             head = best
-        elif misread and fit < p.tau_head:
+        elif fit < p.tau_head and (misread or not (sg.sensors or t.head in GENERIC_HEADS)):
+            # names nothing the memory knows: a remark, a title, a heading or a term of address; where it is
+            # placed against something the memory knows ("thy trial awaits at the spider plant", "on my way
+            # to the shelf unit"), that is the goal (not what holds it: "the relics hidden in this house")
+            for r in (r for r in t.relations if r.type not in ("in", "in_room_with")):
+                g = ground_subgoal(verifier, dataclasses.replace(sg, target=r.anchor), vocab, captions)
+                if g is not None:
+                    return g
             return None
     room, rels = sg.room, t.relations
     inside = [r for r in rels if r.type == "in" and not r.anchor.relations and not r.anchor.attributes]
@@ -148,7 +164,28 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
     if not vocab:
         return tuple(subgoals), ()
     kept, dropped = [], []
+    names = {w for n in vocab for w in _WORD.findall(n)}
     for sg in subgoals:
+        t = sg.target
+        if (captions is not None and not (t.relations or sg.room or sg.location or sg.sensors) and t.head not in vocab
+                and all(said(w, captions) and w not in names for w in _WORD.findall(t.head))):
+            # "the amp, retro": words the memory describes things with but names nothing by describe the goal before
+            if kept:
+                prev = kept[-1].target
+                attrs = prev.attributes + tuple(a for a in (*t.attributes, t.head) if a not in prev.attributes)
+                kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(prev, attributes=attrs))
+            else:
+                dropped.append(t.phrase)
+            continue
+        if (is_room_phrase(t.head.split()) and not (t.relations or sg.location or sg.sensors)
+                and float(name_fit(verifier, [t.head], vocab)[0]) < verifier.p.tau_head):
+            # "the toy chest (open) in the nursery" read as a goal called "nursery": a room is where the goal
+            # before it is, not an object to find
+            if kept and kept[-1].room is None:
+                kept[-1] = dataclasses.replace(kept[-1], room=t.head)
+            else:
+                dropped.append(t.phrase)
+            continue
         g = ground_subgoal(verifier, sg, vocab, captions)
         if g is None:
             dropped.append(sg.target.phrase)

@@ -222,7 +222,7 @@ for _v in ("share", "shares", "sharing", "shared"):
 RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "
     "resting found right just directly immediately somewhere mounted hanging kept rests hangs perched parked "
-    "stored stationed installed sat propped tucked pushed sited lives live sit rest lie hang".split()
+    "stored stationed installed sat stood propped tucked pushed sited lives live sit rest lie hang".split()
 )
 
 # Relative clauses: "the lamp that is switched on", "the sofa which is red", "the cabinet that's open".

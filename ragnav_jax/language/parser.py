@@ -136,7 +136,13 @@ _PAIR_XY = (
     rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|/|\||and|,\s*and)?\s*(?:(?:the|an?)\s+)?"
     rf"y{_AXIS}(?P<y2>{NUM}){_NUM_END}{_METRES}"
 )
-_LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY})")
+# each number followed by its axis: "11.8 m on x and 4.4 m on y", "7.9 along and 8.5 up" (across a plan, then up it)
+_PAIR_NUM_AXIS = (
+    rf"(?P<x4>{NUM}){_NUM_END}{_METRES}\s+(?:(?:on|along|for|in)\s+(?:the\s+)?x(?:[\s-]*axis)?\b|along\b|across\b)"
+    rf"\s*(?:,|;|and|,\s*and)?\s*(?P<y4>{NUM}){_NUM_END}{_METRES}\s+(?:(?:on|along|for|in|up)\s+(?:the\s+)?y(?:[\s-]*axis)?\b"
+    r"|up\b)"
+)
+_LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY}|{_PAIR_NUM_AXIS})")
 _LOC2 = re.compile(
     r"(?:\b(?:located|positioned|situated|placed)\s+)?(?:\b(?:at|coordinates?|coords?|position|point|location)\s+"
     rf"|\b(?:around|near|roughly|about|approximately)\s+(?={NUM}\s*/)"
@@ -854,8 +860,8 @@ def _cmp_code(cmp: str | None, post: str | None) -> str:
 def _cut(s: str, marks: _Marks) -> str:
     def loc(m: re.Match) -> str:
         g = m.groupdict()
-        x = g.get("x1") or g.get("x2") or g.get("x3")
-        y = g.get("y1") or g.get("y2") or g.get("y3")
+        x = g.get("x1") or g.get("x2") or g.get("x3") or g.get("x4")
+        y = g.get("y1") or g.get("y2") or g.get("y3") or g.get("y4")
         what = f"the coordinates '{m.group(0).strip()}'"
         return marks.add(m.group(0), location=Location(_to_float(x, what), _to_float(y, what)))
 
@@ -1674,8 +1680,16 @@ def parse_instruction(text: str) -> TaskChain:
         if p.ellipsis and goals and pending is None and (
             p.connector in APPOSITION or (p.connector in LIST_SEPARATORS and not p.led and not _clashes(goals[-1], p))
         ):
-            # "the heater, the black one," / "the fern (the one by the window)": more about the same goal.
-            _merge(goals[-1], p)
+            # "the heater, the black one," / "the fern (the one by the window)": more about the same goal; in
+            # brackets straight after an anchor ("the lamp by the shelf (the one near the door)"), about the anchor.
+            anchor = _last_anchor(goals[-1]) if p.connector in APPOSITION and p.node is not None else None
+            if anchor is not None:
+                anchor.words = [w for w in p.node.words if w not in ("one", "ones")] + anchor.words
+                anchor.add_states(p.node.states + p.attrs_after)
+                anchor.relations += p.node.relations + p.relations
+                goals[-1].texts += p.texts
+            else:
+                _merge(goals[-1], p)
             continue
         if pending is not None:
             p = _merge(p, pending, prefix=True)
@@ -1766,6 +1780,19 @@ def _order_remarks(s: str) -> tuple[str, bool]:
         return " " if _STRICT_CUES & set(words) else m.group(0)
 
     return _ORDER_CLAUSE.sub(read, s), free
+
+
+def _last_anchor(g: _Piece) -> _Node | None:
+    """The anchor whose words end the goal's text ("the lamp by the shelf" -> the shelf), if any."""
+    words = _TOKEN.findall(g.texts[-1].lower()) if g.texts else []
+    rels = list(g.relations) + (list(g.node.relations) if g.node is not None else [])
+    while rels:
+        a = rels[-1][1]
+        if a.relations:
+            rels = list(a.relations)
+            continue
+        return a if a.words and words[-len(a.words):] == a.words else None
+    return None
 
 
 def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
