@@ -12,7 +12,7 @@ from ragnav_jax.evaluation.grounding import candidate_heads, content_runs, groun
 from ragnav_jax.evaluation.verify import Verifier
 from ragnav_jax.language.lexicon import CLOSED_CLASS
 from ragnav_jax.language.parser import parse_instruction
-from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import Relation, Subgoal, Target
 from ragnav_jax.memory.encoder import make_embedder
 
 VOCAB = ["chest freezer", "bonsai tree", "dehumidifier", "sofa", "table saw", "spice rack", "reading lamp", "shelf unit"]
@@ -65,23 +65,20 @@ def test_a_goal_the_memory_can_name_stays_as_parsed(verifier):
         assert ground_subgoal(verifier, sg, [*VOCAB, "drawers"]) is sg
 
 
-@pytest.mark.parametrize("phrase", ["zebra", "household trials", "ln item", "stick to it"])
-def test_a_goal_that_names_nothing_the_memory_knows_is_dropped(verifier, phrase):
-    """Titles, headings, remarks (and objects the robot never saw): the check could confirm no object for them,
-    and running them costs the episode's time. A reading or a generic head keeps a goal (the reading singles
-    the object out: `Verifier.verdicts`)."""
-    assert ground_subgoal(verifier, goal(phrase, phrase), VOCAB) is None
-    hot = dataclasses.replace(goal("zebra", "the hottest zebra"), sensors=(SensorConstraint("temperature_c", "max"),))
-    assert ground_subgoal(verifier, hot, VOCAB) is hot
-    assert ground_subgoal(verifier, goal("thing", "the thing"), VOCAB) is not None
+def test_a_goal_of_content_words_stays_a_goal_found_or_not(verifier):
+    """At close range the captioner may name an object by a word the memory never used: a head of content words
+    stays a goal even when it names nothing the memory knows; a misread one ("stick to it") is dropped."""
+    zebra = goal("zebra", "find the zebra")
+    assert ground_subgoal(verifier, zebra, VOCAB) is zebra
+    assert ground_subgoal(verifier, goal("stick to it", "stick to it"), VOCAB) is None
 
 
 def test_placed_against_a_known_object_that_object_is_the_goal(verifier):
     """'thy first trial awaits at the bonsai tree': a head that names nothing, placed near a recorded object."""
-    t = Target("trial awaits", "trial awaits", (), (Relation("near", Target("bonsai tree", "bonsai tree")),))
+    t = Target("it awaits", "it awaits", (), (Relation("near", Target("bonsai tree", "bonsai tree")),))
     g = ground_subgoal(verifier, Subgoal(0, t, text="thy first trial awaits at the bonsai tree"), VOCAB)
     assert g is not None and g.target.head == "bonsai tree" and not g.target.relations
-    inside = Target("relics", "relics", (), (Relation("in", Target("sofa", "sofa")),))  # what holds it is no goal
+    inside = Target("the relics", "the relics", (), (Relation("in", Target("sofa", "sofa")),))  # what holds it: no goal
     assert ground_subgoal(verifier, Subgoal(0, inside, text="relics lie hidden in the sofa"), VOCAB) is None
 
 
@@ -161,8 +158,8 @@ def test_a_repaired_head_is_a_run_of_content_words_of_head_or_span(verifier, hea
     head, text = " ".join(head_words), " ".join(head_words + text_words)
     g = ground_subgoal(verifier, goal(head, text), VOCAB)
     fit = name_fit(verifier, [head], VOCAB)[0]
-    if g is None:  # dropped only when the head fails the name check and no piece of it grounds
-        assert fit < verifier.p.tau_head
+    if g is None:  # dropped only when the head is misread, fails the name check and no piece of it or its span grounds
+        assert any(w in CLOSED_CLASS or w[0].isdigit() for w in head_words) and fit < verifier.p.tau_head
         assert name_fit(verifier, candidate_heads(head), VOCAB).max(initial=0.0) < verifier.p.tau_ground
         return
     if g.target.head != head:

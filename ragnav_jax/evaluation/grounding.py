@@ -18,12 +18,12 @@ against the memory of the house:
   (cosine below the verifier's `tau_head`) is replaced likewise by a run of its own words.
   A misread head's name is looked for in its first run of words first: a noun phrase's head comes before
   what modifies it ("the cello close of the shelving unit" is the cello);
-- a head below `tau_head` with no such run names nothing the memory knows (a title, a heading, a remark,
-  an aside: "the household trials", "ln item", "stick to it"): the verifier could confirm no
-  object for it (its name check needs that cosine). Where it is placed against an object the memory knows
-  ("thy trial awaits at the spider plant", "on my way to the shelf unit"; not "in", what holds it), that
-  object is the goal; otherwise the goal is dropped and reported (`ungrounded` in the episode rows). A
-  goal measured by a sensor or with a generic head ("thing") stays: the reading singles its object out;
+- a misread head below `tau_head` with no such run names nothing the memory knows (a remark, an aside).
+  Where it is placed against an object the memory knows ("thy trial awaits at the spider plant", "on my
+  way to the shelf unit"; not "in", what holds it), that object is the goal; otherwise the goal is dropped
+  and reported (`ungrounded` in the episode rows). A head of content words only stays a goal, found or not:
+  at close range the captioner may name its object by a word the memory never used (the O and P runs of
+  commit f554bcd dropped those too, which a hashing-embedder test showed loses goals named by a synonym);
 - a goal that is only words the memory describes things with and names nothing by ("the amp, retro" read
   as a goal "retro") gives them to the goal before it as attributes; one that is only a room name the
   memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it to the goal
@@ -46,7 +46,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ragnav_jax.evaluation.verify import recorded, said, vocabulary
-from ragnav_jax.language.lexicon import CLOSED_CLASS, GENERIC_HEADS, is_modifier, is_room_phrase
+from ragnav_jax.language.lexicon import CLOSED_CLASS, is_modifier, is_room_phrase
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -131,7 +131,7 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | 
             best, score = _best(verifier, [x for x in candidate_heads(sg.text) if not set(x.split()) & taken], vocab)
         if score >= p.tau_ground and score > fit:
             head = best
-        elif fit < p.tau_head and (misread or not (sg.sensors or t.head in GENERIC_HEADS)):
+        elif fit < p.tau_head and misread:
             # names nothing the memory knows: a remark, a title, a heading or a term of address; where it is
             # placed against something the memory knows ("thy trial awaits at the spider plant", "on my way
             # to the shelf unit"), that is the goal (not what holds it: "the relics hidden in this house")
