@@ -1551,6 +1551,7 @@ def _normalise(text) -> str:
 _ARTICLES = ("the", "a", "an")
 _RELATIVES = frozenset("that which who whose".split())
 _GLUE = frozenset("also too plus additionally".split())  # said between two items the parser has no word for
+_GLUE_TAIL = re.compile(rf"(?:\s+(?:{'|'.join(sorted(_GLUE))}))+\s*$")
 
 
 def _glued(piece: _Piece) -> list[list[str]]:
@@ -1595,7 +1596,7 @@ def _unglue(seg: str, marks: _Marks) -> list[str]:
                         cop is not None and not _RELATIVES & set(rest[:cop])):
                     continue
                 head = seg[: toks[p].start()]
-                head = re.sub(rf"(?:\s+(?:{'|'.join(_GLUE)}))+\s*$", " ", head)
+                head = _GLUE_TAIL.sub(" ", head)
                 if head.strip():
                     return [head, *_unglue(seg[toks[p].start():], marks)]
     return [seg]
