@@ -470,6 +470,8 @@ class EvalConfig:
     strict_lam: float = 1.0e4  # order penalty of the shortest route SPL measures a strict episode against (metres
     # per order inversion; the loop itself keeps a strict instruction's order)
     batch_size: int = 512  # episodes executed together in one vmapped call
+    engine: str = "host"  # "device": the whole closed loop as one jitted program (evaluation/loop/; not etpnav,
+    # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/episode.py
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)
@@ -497,6 +499,7 @@ class EvalConfig:
     def __post_init__(self):
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
         _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
+        _check(self.engine in ("host", "device"), "eval.engine", "must be 'host' or 'device'")
         _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")

@@ -3,6 +3,7 @@ profile runs end to end at tiny scale on the CPU (chunked retrieval, capped fais
 
 import json
 
+import numpy as np
 import pytest
 
 from ragnav_jax.bench.profiles import FULL, GPU, PROFILES, QUICK, SECTIONS, scaled
@@ -166,3 +167,90 @@ def test_merge_section_combines_rows_per_size():
     failed = {"status": "failed", "reason": "OOM"}
     assert _merge_section(b, failed, "nodes") is b and _merge_section(failed, b, "nodes") is b
     assert _merge_section({"status": "ok", "x": 1}, {"status": "ok", "x": 2}, None)["x"] == 2
+
+
+def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, apartment):
+    # The engines are stood in for (a real device compile takes minutes on a 2-core CPU; `ragnav bench --only
+    # closed_loop` measures them): the fake evaluate_navigation goes through the same module functions the real
+    # one calls, so the section's capture, replays, tiling, agreement and compile accounting are what is tested.
+    import types
+
+    from ragnav_jax.bench import sections
+    from ragnav_jax.bench.report import comparison_table
+    from ragnav_jax.evaluation import episode
+    from ragnav_jax.evaluation.loop import program
+    from ragnav_jax.language.episodes import load_episodes
+    from ragnav_jax.memory.encoder import HashingEmbedder
+    from ragnav_jax.world.scene import example_scene_path
+
+    assert "closed_loop" in SECTIONS and "closed_loop" in sections.SECTION_FUNCS
+    assert GPU.loop_episodes >= 16384 and scaled(GPU, 0.001).loop_episodes >= 2
+    compiled, seen = set(), []
+
+    def loop_stub(engine):
+        def run(ex, states, *rest, **kw):
+            if (engine, len(states)) not in compiled:  # one trace per engine and batch size, as jit caches them
+                compiled.add((engine, len(states)))
+                ex.traces["run"] += 1
+            seen.append(all(st.status == ["pending"] * len(st.status) for st in states))
+            for st in states:  # every goal found, except episode 0 on the host engine
+                ok = engine == "device" or st.e != 0
+                st.status = ["found" if ok else "failed:stuck"] * len(st.status)
+                st.found = [ok] * len(st.found)
+                st.steps, st.look_steps = 40, 8
+        return run
+
+    def fake_evaluate(bank, scenes, eps, embedder, cfg, method, streams=None, executor=None, verifier=None):
+        states = [types.SimpleNamespace(e=i, status=["pending"] * len(ep.goals), found=[False] * len(ep.goals),
+                                        steps=0, look_steps=0) for i, ep in enumerate(eps)]
+        if cfg.eval.engine == "device":
+            program.run_device(executor, states, cfg)
+        else:
+            for c0 in range(0, len(states), 2):  # host batches of 2
+                episode._run_chunk(executor, states[c0 : c0 + 2], 2, cfg)
+        return [{"success": all(st.found), "goal_status": list(st.status), "steps": st.steps + st.look_steps}
+                for st in states], {}
+
+    monkeypatch.setattr(episode, "_run_chunk", loop_stub("host"))
+    monkeypatch.setattr(program, "run_device", loop_stub("device"))
+    monkeypatch.setattr(sections, "execute_stage", lambda: fake_evaluate)
+    monkeypatch.setattr(sections.experiment("bench_sim"), "bench_mjx",
+                        lambda env, b, steps, reps: {"batch": b, "env_steps_per_s": 960.0, "compile_s": 0.1})
+    p = QUICK.replace(name="loop-test", loop_scenes=1, loop_episodes=6, loop_distinct=3, loop_repeats=2,
+                      loop_host_repeats=1)
+    eps = load_episodes(example_scene_path().parent / "episodes.jsonl", [apartment])
+    art = {"scenes": [apartment], "explored": [types.SimpleNamespace(stream=None)], "bank": None,
+           "embedder": HashingEmbedder(dim=64), "episodes": eps}
+    monkeypatch.setitem(sections._ARTIFACTS, (p.name, 1), art)
+    res = sections.bench_closed_loop(p, lambda s: None)
+    assert not hasattr(episode._run_chunk, "__wrapped__") and not hasattr(program.run_device, "__wrapped__")
+    assert all(seen)  # every replay started from copies of the states as they were before the loop
+    assert res["distinct_episodes"] == 3 and res["episodes"] == 6 and res["env_steps_per_s"] == 960.0
+    assert set(res["methods"]) == {"oracle", "ragnav"} and len(res["comparisons"]) == 2
+    for m in res["methods"].values():
+        h, d = m["host"], m["device"]
+        assert (h["episodes"], h["tiled"], len(h["runs"])) == (3, False, 2)  # the evaluate call's loop + 1 replay
+        assert (d["episodes"], d["tiled"], len(d["runs"])) == (6, True, 3)  # tiled: 1 + 2 replays of 6
+        assert m["agreement"] == pytest.approx(2 / 3) and 0 <= m["agreement"] <= 1
+        assert h["replay_agreement"] == d["replay_agreement"] == 1.0
+        for e in (h, d):
+            assert e["episodes_per_s"] > 0 and np.isfinite(e["episodes_per_s"]) and e["compile_s"] >= 0
+            assert e["compilations_after_first"] == 0 and e["evaluate_call"]["preamble_s"] >= 0
+            assert e["episodes_per_s_range"][0] <= e["episodes_per_s"] <= e["episodes_per_s_range"][1]
+        assert m["steps_per_episode"] == 48 and m["episodes_per_s_bound"] == pytest.approx(20.0)
+    first = res["methods"]["oracle"]
+    assert first["host"]["compilations"] == 2 and first["device"]["compilations"] == 2  # sizes 2, 1; 3, 6
+    assert res["methods"]["ragnav"]["device"]["compilations"] == 0  # the stub's cache, like jit's, is warm
+    c = res["comparisons"][0]
+    assert c["section"] == "closed_loop" and c["ratio"] > 0 and c["peer_episodes"] == 3 and c["episodes"] == 6
+    md = sections.closed_loop_markdown(res)
+    assert md[0].startswith("## Closed loop") and sum(line.startswith("| oracle") for line in md) == 1
+    assert len(comparison_table(res["comparisons"])) == 4
+
+
+def test_loop_episodes_spaces_or_repeats():
+    from ragnav_jax.bench.sections import loop_episodes
+
+    xs = list(range(10))
+    assert loop_episodes(xs, 5) == [0, 2, 4, 6, 8] and loop_episodes(xs, 10) == xs
+    assert loop_episodes(xs, 23) == xs + xs + [0, 1, 2]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-SECTIONS = ("retrieval", "paths", "planning", "simulation", "end_to_end", "sweep")
+SECTIONS = ("retrieval", "paths", "planning", "simulation", "end_to_end", "sweep", "closed_loop")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -50,6 +50,16 @@ class Profile:
     # sweep: grid points of sigma x eta (x lambda where navigation metrics exist)
     sweep_points: int = 100
     sweep_scenes: int = 2
+    # closed loop, eval.engine=host vs device, on the paper preset's first loop_scenes scenes: both engines run
+    # evaluate_navigation on the distinct episodes (evenly spaced over the scenes' episodes), then the loop alone
+    # again on copies of its states; the device runs tile them to loop_episodes (bench_closed_loop)
+    loop_scenes: int = 1
+    loop_episodes: int = 16  # episodes of each timed device run
+    loop_distinct: int | None = None  # distinct episodes (None: loop_episodes, at most the scenes' episodes)
+    loop_repeats: int = 3  # timed device runs after the first (which compiles)
+    loop_host_repeats: int = 1  # timed host runs after the first
+    loop_batch: int | None = None  # eval.batch_size (None: the config's)
+    loop_methods: tuple[str, ...] = ("oracle", "ragnav")
 
     def replace(self, **kw) -> Profile:
         return dataclasses.replace(self, **kw)
@@ -64,6 +74,7 @@ QUICK = Profile(
     e2e_scenes=(1,), e2e_spacings=(0.8, 0.5), e2e_spacing_scenes=1, e2e_plan_episodes=2,
     e2e_explore_steps=400, e2e_execute_episodes=1,
     sweep_points=36, sweep_scenes=1,
+    loop_scenes=1, loop_episodes=8, loop_repeats=2, loop_host_repeats=1,  # ~5 min on 2 cores, mostly compiling
 )
 
 # CPU: explore runs a shortened budget (1500 steps) so 1 + 4 + 14 + 64 scenes fit the suite's 10 minutes on
@@ -72,6 +83,7 @@ FULL = Profile(
     name="full", path_nx_sample=20, path_repeats=3, retrieval_queries=(256, 256, 64, 16), sim_batches=(1, 32, 1024),
     e2e_scenes=(1, 4, 14, 64), e2e_spacing_scenes=1, e2e_explore_steps=1500, e2e_execute_episodes=4,
     sweep_points=100, sweep_scenes=4,
+    loop_scenes=4, loop_episodes=64, loop_repeats=3, loop_host_repeats=1,
 )
 
 GPU = Profile(
@@ -92,6 +104,9 @@ GPU = Profile(
     e2e_plan_episodes=32, e2e_embedder="minilm", e2e_explore_steps=None, e2e_explore_batch=256,
     e2e_execute_episodes=4096,
     sweep_points=1024, sweep_scenes=14,
+    # 256 distinct episodes of the 14 x 60 (RAGNav's preamble costs about 0.3 s of host time per episode)
+    # tiled to one device batch of 16384; the host engine runs the 256
+    loop_scenes=14, loop_episodes=16384, loop_distinct=256, loop_repeats=3, loop_host_repeats=1, loop_batch=16384,
 )
 
 PROFILES = {"quick": QUICK, "full": FULL, "gpu": GPU}
@@ -129,4 +144,7 @@ def scaled(p: Profile, s: float) -> Profile:
         e2e_explore_batch=None if p.e2e_explore_batch is None else _s(p.e2e_explore_batch, s, 1),
         e2e_execute_episodes=_s(p.e2e_execute_episodes, s, 1),
         sweep_points=_s(p.sweep_points, s, 8), sweep_scenes=_s(p.sweep_scenes, s, 1),
+        loop_scenes=_s(p.loop_scenes, s, 1), loop_episodes=_s(p.loop_episodes, s, 2),
+        loop_distinct=None if p.loop_distinct is None else _s(p.loop_distinct, s, 2),
+        loop_batch=None if p.loop_batch is None else _s(p.loop_batch, s, 2),
     )

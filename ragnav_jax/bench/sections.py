@@ -6,6 +6,8 @@ scripts and the suite share one implementation.
 
 from __future__ import annotations
 
+import contextlib
+import copy
 import dataclasses
 import functools
 import importlib.util
@@ -275,11 +277,12 @@ def execute_stage():
     return evaluate_navigation
 
 
-def run_pipeline(cfg, p: Profile, log, reuse=None, execute: bool = True) -> tuple[dict, dict]:
+def run_pipeline(cfg, p: Profile, log, reuse=None, execute: bool = True, plan: bool = True) -> tuple[dict, dict]:
     """The RAGNav pipeline on cfg's scenes, each stage under stage_clock; returns (record, artifacts).
 
     reuse: artifacts of an earlier call (scenes and exploration results) to skip generate and explore;
-    execute: run a sample of episodes through the closed loop (skipped in the nodes-per-scene runs).
+    execute: run a sample of episodes through the closed loop (skipped in the nodes-per-scene runs);
+    plan: plan a sample of instructions (skipped where only the artifacts are wanted).
     """
     import jax
 
@@ -315,7 +318,7 @@ def run_pipeline(cfg, p: Profile, log, reuse=None, execute: bool = True) -> tupl
     st["retrieve"]["subgoals"] = sum(s is not None for s in meta.slots)
     by_name = {s.name: s for s in scenes}
     k = p.e2e_plan_episodes
-    todo = episodes[:: max(1, len(episodes) // max(k, 1))][:k]
+    todo = episodes[:: max(1, len(episodes) // max(k, 1))][:k] if plan else []
     failed = 0
     with stage_clock(st.setdefault("plan", {})):
         for ep in todo:
@@ -425,7 +428,236 @@ def bench_sweep(p: Profile, log: Callable[[str], None]) -> dict:
     raise Unavailable(note or "no sweep grid could run")
 
 
+# ----------------------------------------------------------------------------------------------------
+# Closed loop: the host engine vs the device engine (eval.engine)
+
+# The closed loop proper of each engine, both called by evaluate_navigation as fn(loop, states, ...) after its
+# preamble (parsing, retrieval, verdict tables) and before the rows are made.
+LOOP_ENTRY_POINTS = (("ragnav_jax.evaluation.episode", "_run_chunk"),  # host engine, one batch of episodes
+                     ("ragnav_jax.evaluation.loop.program", "run_device"))  # device engine, all episodes
+
+
+def loop_episodes(episodes: list, n: int) -> list:
+    """n episodes: evenly spaced below the list's length (as the end-to-end execute stage picks them), the
+    whole list repeated above it."""
+    if n <= len(episodes):
+        return episodes[:: max(1, len(episodes) // max(n, 1))][:n]
+    return (episodes * math.ceil(n / len(episodes)))[:n]
+
+
+@contextlib.contextmanager
+def _captured_loop(calls: list):
+    """While active, every call of a LOOP_ENTRY_POINTS function is timed (stage_clock) and appended to `calls`
+    with its arguments and a copy of its states as they were before it ran, which `_replay` runs again.
+    evaluate_navigation reports no loop-only time, so the module functions are wrapped for the duration of
+    one call and restored after it."""
+    import importlib
+
+    saved = []
+    for modname, name in LOOP_ENTRY_POINTS:
+        mod = importlib.import_module(modname)
+        fn = getattr(mod, name)
+
+        @functools.wraps(fn)
+        def timed(loop, states, *rest, _fn=fn, **kw):
+            t0 = time.perf_counter()
+            rec = {"fn": _fn, "loop": loop, "states": states, "rest": rest, "kw": kw, "before": copy.deepcopy(states)}
+            rec["copy_s"] = time.perf_counter() - t0
+            with stage_clock(rec):
+                out = _fn(loop, states, *rest, **kw)
+            calls.append(rec)
+            return out
+
+        setattr(mod, name, timed)
+        saved.append((mod, name, fn))
+    try:
+        yield calls
+    finally:
+        for mod, name, fn in reversed(saved):
+            setattr(mod, name, fn)
+
+
+def _replay(calls: list, n: int, traces: dict) -> tuple[dict, list]:
+    """Runs the captured loop calls again on fresh copies of their starting states; where n is more than they
+    held, the states of the single captured call tiled to n (each copy its own object). Returns the
+    stage_clock record (copying not timed) and the final states, in order."""
+    held = sum(len(c["before"]) for c in calls)
+    if n > held:
+        if len(calls) != 1:
+            raise ValueError(f"tiling to {n} episodes replays one captured call, not {len(calls)}")
+        src = calls[0]["before"]
+        jobs = [(calls[0], [copy.deepcopy(src[i % len(src)]) for i in range(n)])]
+    else:
+        jobs = [(c, copy.deepcopy(c["before"])) for c in calls]
+    rec: dict = {"episodes": max(n, held)}
+    before = sum(traces.values())
+    with stage_clock(rec):
+        for c, states in jobs:
+            c["fn"](c["loop"], states, *c["rest"], **c["kw"])
+    rec["traces"] = sum(traces.values()) - before
+    return rec, [st for _, states in jobs for st in states]
+
+
+def _outcome_state(st) -> tuple:
+    return tuple(st.status), tuple(st.found)
+
+
+def _outcome_row(row: dict) -> tuple:
+    return bool(row["success"]), tuple(row["goal_status"])
+
+
+def engine_runs(run: Callable[[], tuple], n: int, repeats: int, traces: dict) -> tuple[dict, list[dict]]:
+    """One engine's figures: run() (an evaluate_navigation call -> (rows, summary)) once with its loop captured,
+    then the loop alone again on copies of the captured states (tiled to n episodes where n is more than run()
+    evaluated), `repeats` times after the first timed run. The first timed run is the evaluate call's loop where
+    no tiling is needed (else the first replay) and includes compilation: compile_s = first - median of the
+    others. Returns (record, the evaluate call's rows). `traces`: the executor's trace counters."""
+    calls: list = []
+    ev: dict = {}
+    t0 = sum(traces.values())
+    with stage_clock(ev), _captured_loop(calls):
+        rows, _ = run()
+    ev["traces"] = sum(traces.values()) - t0
+    ev["episodes"] = len(rows)
+    ev["loop_s"] = sum(c["wall_s"] for c in calls)
+    ev["loop_compile_s"] = sum(c["compile_s"] for c in calls)
+    ev["preamble_s"] = ev["wall_s"] - ev["loop_s"] - sum(c["copy_s"] for c in calls)  # parsing ... rows
+    if not calls:
+        raise RuntimeError("evaluate_navigation ran no closed loop (no call of " +
+                           ", ".join(f"{m}.{f}" for m, f in LOOP_ENTRY_POINTS) + ")")
+    finals = [st for c in calls for st in c["states"]]
+    d = len(finals)
+    tiled = n > d
+    runs = [] if tiled else [{"episodes": d, "wall_s": ev["loop_s"], "compile_s": ev["loop_compile_s"],
+                              "traces": ev["traces"], "source": "evaluate_navigation call"}]
+    same, last = [], finals
+    for _ in range(repeats + (1 if tiled else 0)):
+        rec, last = _replay(calls, max(n, d), traces)
+        rec["source"] = "replay"
+        runs.append(rec)
+        same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(last)]
+    warm = stats([r["wall_s"] for r in runs[1:] or runs])
+    m = runs[0]["episodes"]
+    return {"episodes": m, "distinct_episodes": d, "tiled": tiled, "evaluate_call": ev, "runs": runs, "warm": warm,
+            "episodes_per_s": m / warm["median_s"], "episodes_per_s_range": [m / warm["max_s"], m / warm["min_s"]],
+            "compile_s": max(runs[0]["wall_s"] - warm["median_s"], 0.0), "jax_compile_s_first": runs[0]["compile_s"],
+            "compilations": ev["traces"] + sum(r["traces"] for r in runs if r["source"] == "replay"),
+            "compilations_after_first": sum(r["traces"] for r in runs[1:]),
+            "replay_agreement": float(np.mean(same)) if same else None,
+            "steps_per_episode": float(np.mean([st.steps + st.look_steps for st in last]))}, rows
+
+
+def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
+    """Episodes/s of the closed loop with eval.engine=host (the host state machine, one batched MJX call per
+    leg) and eval.engine=device (the whole loop of a batch as one jitted while_loop) on the same paper-preset
+    episodes, executor and verifier; per-episode agreement of the two; MJX's step-only rate at the loop's batch
+    (experiments/bench_sim.py) with the episodes/s it implies at the loop's steps per episode."""
+    from ragnav_jax.evaluation.execute import make_executor
+    from ragnav_jax.evaluation.verify import Verifier
+    from ragnav_jax.sim.env import NavEnv
+
+    evaluate_navigation = execute_stage()
+    try:
+        from ragnav_jax.evaluation.loop import program  # noqa: F401  the device engine
+    except ImportError as e:
+        raise Unavailable(f"the device closed loop (evaluation/loop) is not in this tree ({e})") from e
+    base = paper_config(p, p.loop_scenes)
+    if not hasattr(base.eval, "engine"):
+        raise Unavailable("eval.engine is not in this tree's config")
+    setup: dict = {}
+    with stage_clock(setup):
+        art = _ARTIFACTS.get((p.name, p.loop_scenes))
+        if art is None:
+            _, art = run_pipeline(base, p, log, execute=False, plan=False)
+            _ARTIFACTS[(p.name, p.loop_scenes)] = art
+        scenes, bank, embedder = art["scenes"], art["bank"], art["embedder"]
+        distinct = loop_episodes(art["episodes"], min(p.loop_distinct or p.loop_episodes, p.loop_episodes,
+                                                      len(art["episodes"])))
+        n = max(p.loop_episodes, len(distinct))
+        batch = p.loop_batch or base.eval.batch_size
+        used = [s for s in scenes if s.name in {ep.scene for ep in distinct}]
+        executor = make_executor(used, base)  # shared by both engines and both methods, as their verifier
+        verifier = Verifier.build(embedder, base)
+    streams = {s.name: r.stream for s, r in zip(scenes, art["explored"])}
+
+    def runner(method: str, engine: str):
+        cfg = dataclasses.replace(base, eval=dataclasses.replace(base.eval, engine=engine, batch_size=batch))
+        return lambda: evaluate_navigation(bank, scenes, distinct, embedder, cfg, method, streams=streams,
+                                           executor=executor, verifier=verifier)
+
+    res = {"preset": "configs/paper.yaml", "embedder": p.e2e_embedder, "scenes": len(scenes),
+           "scene_episodes": len(art["episodes"]), "distinct_episodes": len(distinct), "episodes": n,
+           "batch_size": batch, "setup": setup, "methods": {}, "comparisons": []}
+    for method in p.loop_methods:
+        host, host_rows = engine_runs(runner(method, "host"), len(distinct), p.loop_host_repeats, executor.traces)
+        _partial(res)
+        dev, dev_rows = engine_runs(runner(method, "device"), n, p.loop_repeats, executor.traces)
+        same = [_outcome_row(h) == _outcome_row(d) for h, d in zip(host_rows, dev_rows)]
+        rec = {"host": host, "device": dev, "agreement": float(np.mean(same)), "agreement_episodes": len(same),
+               "success_rate_host": float(np.mean([r["success"] for r in host_rows])),
+               "success_rate_device": float(np.mean([r["success"] for r in dev_rows]))}
+        res["methods"][method] = rec
+        res["comparisons"].append(comparison(
+            "closed_loop", f"device vs host closed loop, {method}, {dev['episodes']} episodes",
+            _per(dev["warm"], dev["episodes"]), _per(host["warm"], host["episodes"]), "host loop (eval.engine=host)",
+            "episode", method=method, compile_s=dev["compile_s"], agreement=rec["agreement"],
+            episodes=dev["episodes"], peer_episodes=host["episodes"], batch_size=batch))
+        _partial(res)
+        log(f"closed loop {method}: host {host['episodes_per_s']:.2f} ep/s ({host['episodes']} episodes), device "
+            f"{dev['episodes_per_s']:.2f} ep/s ({dev['episodes']}), x{res['comparisons'][-1]['ratio']:.2f}, device "
+            f"compile {dev['compile_s']:.1f} s, agreement {rec['agreement']:.2f}")
+    # MJX's step-only rate at the device loop's batch, on these scenes
+    env_batch = min(batch, n)
+    sim = experiment("bench_sim").bench_mjx(NavEnv(used, base.sim), env_batch, p.sim_steps, p.repeats)
+    res.update(mjx=sim, env_steps_per_s=sim["env_steps_per_s"])
+    for rec in res["methods"].values():
+        spe = rec["device"]["steps_per_episode"]
+        rec["steps_per_episode"] = spe
+        rec["episodes_per_s_bound"] = sim["env_steps_per_s"] / spe if spe > 0 else None
+        rec["device_over_bound"] = rec["device"]["episodes_per_s"] / rec["episodes_per_s_bound"] if spe > 0 else None
+    log(f"closed loop: MJX {sim['env_steps_per_s']:.0f} env-steps/s at batch {env_batch}; at that rate " + ", ".join(
+        f"{m} {r['episodes_per_s_bound']:.2f} ep/s" for m, r in res["methods"].items() if r["episodes_per_s_bound"]))
+    res["note"] = (
+        "Each engine runs evaluate_navigation once on the distinct episodes (its rows give agreement and success); "
+        "the closed loop proper (episode._run_chunk batches, loop.program.run_device) is then run again on copies of "
+        "the states that call handed it, so the timed runs leave out the preamble (parsing, retrieval, verdict "
+        "tables; preamble_s under evaluate_call), which is host work per episode and the same for both engines. "
+        + (f"The device runs tile the {len(distinct)} distinct episodes' states to {n} (the same work repeated, "
+           "for throughput at a large batch); the host engine runs the distinct ones. " if n > len(distinct) else "")
+        + "episodes_per_s: episodes / median seconds of the runs after the first; compile_s = first run - that "
+        "median (the first run: the evaluate call's loop or, tiled, the first replay, which compiles for its batch "
+        "once more). compilations: traces of the executor's jitted init, run and look (the device program traces "
+        "run and look once each). agreement: "
+        "share of distinct episodes with the same success and goal_status on both engines; replay_agreement: the "
+        "same status and found on every replay as in the evaluate call. env_steps_per_s: experiments/bench_sim.py "
+        "bench_mjx at the device batch on these scenes; its env step is physics + lidar + camera visibility, while "
+        "a loop step is physics + pure pursuit, so episodes_per_s_bound = env_steps_per_s / steps_per_episode "
+        "(steps as the rows count them, look-around turns included) is a reference, not a ceiling.")
+    return res
+
+
+def closed_loop_markdown(sec: dict) -> list[str]:
+    """bench.md lines of the closed_loop section (none where no method was measured)."""
+    if not sec.get("methods"):
+        return []
+    nan = float("nan")
+    L = ["## Closed loop: host vs device engine", "",
+         f"{sec['scenes']} paper-preset scene(s), {sec['distinct_episodes']} distinct episodes through "
+         f"evaluate_navigation on both engines; device timed on {sec['episodes']}, batch {sec['batch_size']}. "
+         f"MJX alone at that batch: {sec.get('env_steps_per_s', nan):.0f} env-steps/s.", "",
+         "| method | host ep/s | device ep/s [range] | device / host | device compile s | compilations host / device "
+         "| steps/episode | ep/s at MJX rate | agreement |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for m, r in sec["methods"].items():
+        h, d = r["host"], r["device"]
+        lo, hi = d["episodes_per_s_range"]
+        L.append(f"| {m} | {h['episodes_per_s']:.2f} | {d['episodes_per_s']:.2f} [{lo:.2f}-{hi:.2f}] | "
+                 f"{d['episodes_per_s'] / h['episodes_per_s']:.2f}x | {d['compile_s']:.1f} | {h['compilations']} / "
+                 f"{d['compilations']} | {r.get('steps_per_episode', nan):.0f} | "
+                 f"{r.get('episodes_per_s_bound') or nan:.2f} | {r['agreement']:.2f} |")
+    return L + ["", sec.get("note", ""), ""]
+
+
 SECTION_FUNCS = {
     "retrieval": bench_retrieval, "paths": bench_paths, "planning": bench_planning, "simulation": bench_simulation,
-    "end_to_end": bench_end_to_end, "sweep": bench_sweep,
+    "end_to_end": bench_end_to_end, "sweep": bench_sweep, "closed_loop": bench_closed_loop,
 }

@@ -35,15 +35,26 @@ def cmd_sweep(args, cfg) -> int:
     from ragnav_jax.runs import init_run
 
     bank, scenes, episodes, embedder = load_retrieval_inputs(args.run, args.episodes, cfg)
+    if args.stride > 1:
+        episodes = episodes[:: args.stride]
     unparsed = check_unparsed(episodes, args.allow_unparsed, args.episodes)
     out = Path(args.out)
     init_run(out, cfg, "sweep")
     batch, meta = prepare_batch(bank, scenes, episodes, embedder)
+    extra = []
+    if args.closed_loop:  # success, SPL, progress and travel of RAGNav's closed loop at every grid point
+        from ragnav_jax.evaluation.loop.sweep_metric import closed_loop_metrics
+        from ragnav_jax.evaluation.sweep import make_grid
+        from ragnav_jax.retrieval.params import params_from_config
+
+        grid = make_grid(cfg.sweep, params_from_config(cfg.retrieval), cfg.planning.lam)
+        extra = closed_loop_metrics(cfg, bank, scenes, episodes, embedder, grid, meta.modalities)
     rows, summary = run_sweep(cfg, batch, meta, out, fresh=args.fresh, progress=not args.quiet,
-                              log=lambda m: print(m, flush=True), bank=bank, scenes=scenes)
-    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "unparsed": unparsed})
+                              log=lambda m: print(m, flush=True), bank=bank, scenes=scenes, extra_metrics=extra)
+    summary.update({"run": str(args.run), "episodes_file": str(args.episodes), "unparsed": unparsed,
+                    "stride": args.stride, "closed_loop": bool(args.closed_loop)})
     write_json(out / "summary.json", summary)
-    for key in ("best", "best_plan"):
+    for key in ("best", "best_plan", "best_nav"):
         for v, b in summary.get(key, {}).items():
             print(f"{key} {v}: " + ", ".join(f"{k}={b[k]}" for k in b))
     print(f"{summary['grid_points']} grid points x {len(summary['modalities']) + 1} modalities -> {out / 'sweep.csv'}"
@@ -159,4 +170,8 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
         add_batch_flags(p, force=name == "tune")
         if name == "sweep":
             p.add_argument("--fresh", action="store_true", help="discard checkpoints of an earlier sweep in --out")
+            p.add_argument("--closed-loop", action="store_true",
+                           help="also RAGNav's closed-loop navigation (success, SPL, progress, travel) at every grid "
+                                "point: retrieval, candidates and the MJX loop in one compiled call per chunk")
+            p.add_argument("--stride", type=positive_int, default=1, help="every N-th episode only (default 1: all)")
         p.set_defaults(func=func)

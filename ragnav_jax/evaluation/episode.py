@@ -381,15 +381,21 @@ def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
     return out
 
 
-def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
-                        embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
-    """Top-k candidate nodes per subgoal for a method (spec.retrieval); timings of the retrieval kernels.
-    RAGNav's pre-check (`eval.precheck`) needs the verifier."""
+def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, verifier: Verifier | None):
+    """What turns a parse into the subgoals run (evaluation/grounding.py, the tagger), or None."""
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
         ground = TaggedReading(tagger, episodes, conf, then=ground)
+    return ground
+
+
+def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
+                        embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
+    """Top-k candidate nodes per subgoal for a method (spec.retrieval); timings of the retrieval kernels.
+    RAGNav's pre-check (`eval.precheck`) needs the verifier."""
+    ground = grounder(spec, bank, scenes, episodes, cfg, verifier)
     items = goal_items(episodes, ground, every_subgoal=True)
     subgoals: dict[str, object] = {}
     for ep, _kk, _goal, sg in items:
@@ -1003,17 +1009,12 @@ class Loop:
         return lo + int(np.argmin(d))
 
 
-def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
-                        method: str | None = None, streams: dict | None = None, progress: bool = False,
-                        executor: Executor | None = None, verifier: Verifier | None = None,
-                        trace: Collection[str] = ()) -> tuple[list[dict], dict]:
-    """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
-    the same episodes can share one `verifier` (and its encoder cache). The rows of the episode ids in
-    `trace` also hold "legs" with per-step poses and a "trace" (candidates, rejections: `trace_of`)."""
-    from ragnav_jax.evaluation.metrics import episode_row, summarise
-
-    method = method or cfg.eval.method
-    spec = method_spec(method)
+def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
+                     spec: MethodSpec, streams: dict | None = None, executor: Executor | None = None,
+                     verifier: Verifier | None = None, trace: Collection[str] = ()):
+    """Everything before the first leg, for either engine: (loop, states, candidates, the Oracle's candidates,
+    task time per episode). Parses, grounds and retrieves for every episode, computes the verdict and search
+    tables and each episode's first plan."""
     names = list(bank.names)
     unknown = sorted({ep.scene for ep in episodes} - set(names))
     if unknown:
@@ -1054,14 +1055,40 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
         st.trace = trace_of(loop, st, cands) if ep.id in trace else None
         states.append(st)
     task_time = (time.perf_counter() - t0) / max(len(episodes), 1)
+    return loop, states, cands, oracle, task_time
+
+
+def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
+                        method: str | None = None, streams: dict | None = None, progress: bool = False,
+                        executor: Executor | None = None, verifier: Verifier | None = None,
+                        trace: Collection[str] = ()) -> tuple[list[dict], dict]:
+    """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
+    the same episodes can share one `verifier` (and its encoder cache). The rows of the episode ids in
+    `trace` also hold "legs" with per-step poses and a "trace" (candidates, rejections: `trace_of`).
+    `eval.engine` picks the loop: "host" (`_run_chunk`, one batched MJX call per leg) or "device"
+    (`evaluation/loop/program.py`, the whole loop one jitted program; etpnav, traces and record_legs run on
+    the host)."""
+    from ragnav_jax.evaluation.metrics import episode_row, summarise
+
+    method = method or cfg.eval.method
+    spec = method_spec(method)
+    loop, states, cands, oracle, task_time = prepare_episodes(bank, scenes, episodes, embedder, cfg, spec, streams,
+                                                              executor, verifier, trace)
     # 2./3. execute and reflect, a batch of episodes at a time
+    t0 = time.perf_counter()
     B = min(cfg.eval.batch_size, max(len(states), 1))
     bar = _progress(len(states), progress, method)
-    for c0 in range(0, len(states), B):
-        chunk = states[c0 : c0 + B]
-        _run_chunk(loop, chunk, B, cfg)
-        bar(len(chunk))
+    if cfg.eval.engine == "device" and not spec.explores and not trace and not cfg.eval.record_legs:
+        from ragnav_jax.evaluation.loop.program import run_device
+
+        run_device(loop, states, cfg, progress=bar)
+    else:
+        for c0 in range(0, len(states), B):
+            chunk = states[c0 : c0 + B]
+            _run_chunk(loop, chunk, B, cfg)
+            bar(len(chunk))
     bar(0, close=True)
+    cands.timing["loop_s"] = time.perf_counter() - t0
     rows = [episode_row(st, loop, oracle.nodes[st.e], cands, cfg, method) for st in states]
     for r, st in zip(rows, states):
         if st.trace is not None:

@@ -67,6 +67,8 @@ class Executor:
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
     traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
     cache: dict  # host work that depends on these scenes alone (occupancy grids, local plans), shared by methods
+    drive: object  # run unjitted, for callers that trace it into a larger program (evaluation/loop)
+    look_fn: object  # look unjitted, likewise
 
 
 def make_executor(scenes: Sequence[Scene], cfg: Config) -> Executor:
@@ -151,8 +153,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
     run = jax.jit(functools.partial(drive, record=False))
     run_traced = jax.jit(functools.partial(drive, record=True))
 
-    @jax.jit
-    def look(scene_idx, d):
+    def look_fn(scene_idx, d):
         traces["look"] += 1
         m, in_axes = models(scene_idx)
 
@@ -167,6 +168,8 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(one, in_axes=(in_axes, 0, 0, 0, 0))(
             m, d, tables.obj_pos[scene_idx], tables.obj_size[scene_idx], tables.obj_mask[scene_idx])
 
+    look = jax.jit(look_fn)
+
     @jax.jit
     def init(scene_idx, start):
         traces["init"] += 1
@@ -174,7 +177,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, run_traced, look, init, traces, {})
+                    run, run_traced, look, init, traces, {}, functools.partial(drive, record=False), look_fn)
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:

@@ -165,6 +165,7 @@ def summarise(rows: list[dict], timing: dict, task_time_s: float, method: str) -
     out["retrieval_ms_single"] = round(timing.get("retrieval_ms_single", 0.0), 4)
     out["embed_ms"] = round(timing.get("embed_ms", 0.0), 4)
     out["task_time_s"] = round(task_time_s, 4)
+    out["loop_wall_s"] = round(timing.get("loop_s", 0.0), 3)  # host wall clock of the closed loop (all episodes)
     out["total_time_s"] = round(task_time_s + (out["sim_time_s"] or 0.0), 3)
     by = defaultdict(list)
     for r in rows:

@@ -405,6 +405,9 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
         "best": {v: {k: r[k] for k in ("point", *grid.axes, *names)} for v, r in best_points(rows).items()},
         **stats,
     }
+    if "nav_success" in names:
+        summary["best_nav"] = {v: {k: r[k] for k in ("point", *grid.axes, *names)}
+                               for v, r in best_points(rows, "nav_success").items()}
     if "plan_success" in names:
         summary["best_plan"] = {v: {k: r[k] for k in ("point", *grid.axes, *names)}
                                 for v, r in best_points(rows, "plan_success").items()}

@@ -1,0 +1,1 @@
+"""The closed loop on the device: jittable pieces of the evaluation, batched over slots and episodes."""

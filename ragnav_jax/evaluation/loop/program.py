@@ -1,0 +1,276 @@
+"""The closed loop as one device program: every episode of a batch, every leg, one jitted `lax.while_loop`.
+
+    states = run_device(loop, states, cfg)   # evaluation/episode.py hands over its host EpisodeStates
+
+Host Python runs before the loop (the padded `World` and `Inputs` from what `evaluate_navigation` computed:
+candidates, verdict and search tables, the memory's paths, occupancy grids and local plans of map edges)
+and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
+makes the rows). In between, each iteration of the while_loop is one leg for every episode:
+budget -> `step.next_leg` (vmapped) -> waypoints -> MJX drive (`Executor.drive`: a while_loop over control
+steps) -> look-around (MJX camera visibility) -> `step.after_leg` (vmapped). Methods are `Flags` (static),
+the order penalty lambda an array, so a sweep over it reuses one compilation.
+
+What differs from the host loop (README, "The device loop"): an approach whose straight line is blocked
+goes over the map (key pose nearest the robot -> key pose nearest the stop -> stop) where the host's
+grid planner finds a way round; segments that end off the map (the first and last of an approach or a
+look-closer leg) are driven straight where the host plans them on its grid. The ETPNav-style baseline
+(exploration replay) runs on the host loop only.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ragnav_jax.config import Config
+from ragnav_jax.evaluation.loop import geometry as geo
+from ragnav_jax.evaluation.loop import step
+from ragnav_jax.evaluation.loop.state import (
+    FAILED,
+    NONE,
+    REASON_NAMES,
+    STATUS_NAMES,
+    Flags,
+    Inputs,
+    State,
+    World,
+)
+from ragnav_jax.memory.topomap import obstacles_numpy
+from ragnav_jax.world.arrays import pad_sizes
+
+PLAN_POINTS = 24  # waypoints a map edge's local plan may have
+
+
+def flags_of(cfg: Config, look_cost: int) -> Flags:
+    from ragnav_jax.evaluation.episode import GRID_MARGIN_M, TIGHT_GAP_M
+
+    ev, sim = cfg.eval, cfg.sim
+    return Flags(retries=ev.retries, max_steps=ev.max_steps, leg_max_steps=ev.leg_max_steps, look_cost=look_cost,
+                 found_radius=ev.found_radius, approach_gap=ev.approach_gap, robot_radius=sim.robot_radius,
+                 need=sim.robot_radius + GRID_MARGIN_M, tight=sim.robot_radius + TIGHT_GAP_M,
+                 solver=cfg.planning.solver, search_iters=cfg.planning.local_search_iters, path_points=ev.path_points)
+
+
+# ----------------------------------------------------------------------------------------------------
+# Host tables
+
+
+def world_of(loop) -> World:
+    """The `World` of a host `episode.Loop` (its bank's scenes; cached on the executor)."""
+    key = ("device_world", tuple(loop.bank.names), loop._need())  # the executor's scenes are fixed
+    if key in loop.ex.cache:
+        return loop.ex.cache[key]
+    bank = loop.bank
+    B, N = loop.pos.shape[:2]
+    O = loop.ex.model.layout.objects
+    scenes = [loop.scenes.get(m.scene) if m.scene in loop.ex.names else None for m in bank.metas]  # the executor's
+    sizes = pad_sizes([s for s in scenes if s is not None])
+    obs = [obstacles_numpy(s, sizes) if s is not None else None for s in scenes]
+    proto = next(o for o in obs if o is not None)
+    obs = [o if o is not None else {k: np.zeros_like(v) for k, v in proto.items()} for o in obs]
+    obstacles = {k: jnp.asarray(np.stack([o[k] for o in obs])) for k in proto}
+    grids = [geo.scene_grid(loop, b) if s is not None and loop.bank.metas[b].num_nodes else None
+             for b, s in enumerate(scenes)]
+    empty = (np.zeros(2, np.float32), np.zeros((1, 1), np.float32), np.zeros((1, 1), np.int32))
+    g = geo.stack_grids([x if x is not None else empty for x in grids])
+    plans = [geo.edge_plans(loop, b, PLAN_POINTS) if grids[b] is not None else None for b in range(B)]
+    M = max([1] + [len(p[1]) for p in plans if p is not None])
+    plan_idx = np.full((B, N, N), -1, np.int32)
+    plan_pts = np.zeros((B, M, PLAN_POINTS, 2), np.float32)
+    plan_cnt = np.zeros((B, M), np.int32)
+    for b, p in enumerate(plans):
+        if p is not None:
+            plan_idx[b], plan_pts[b, : len(p[1])], plan_cnt[b, : len(p[2])] = p
+    known = np.zeros((B, O), bool)
+    center = np.zeros((B, O, 2), np.float32)
+    half = np.full((B, O, 2), 0.005, np.float32)
+    for b, s in enumerate(scenes):
+        known[b, [o for o in loop.known[b] if o < O]] = True
+        for j, o in enumerate(s.objects if s is not None else ()):
+            center[b, j], half[b, j] = o.position[:2], np.asarray(o.size[:2]) / 2
+    world = World(jnp.asarray(loop.pos, jnp.float32), jnp.asarray(loop.mask), jnp.asarray(loop.cost, jnp.float32),
+                  jnp.asarray(loop.euclid, jnp.float32),
+                  jnp.asarray(loop.drive_pred, jnp.int32), obstacles, jnp.asarray(g["origin"]),
+                  jnp.asarray(g["clear"]), jnp.asarray(g["labels"]), jnp.asarray(g["shape"], jnp.int32), jnp.asarray(plan_idx), jnp.asarray(plan_pts),
+                  jnp.asarray(plan_cnt), jnp.asarray(known), jnp.asarray(center), jnp.asarray(half))
+    loop.ex.cache[key] = world
+    return world
+
+
+def inputs_of(loop, states, G: int, C: int, S: int, T: int) -> Inputs:
+    """The padded `Inputs` of host EpisodeStates (as evaluate_navigation made them, before any leg)."""
+    from ragnav_jax.evaluation.episode import REVISIT
+
+    E, O = len(states), loop.ex.model.layout.objects
+    z = lambda shape, v, t: np.full(shape, v, t)  # noqa: E731
+    b, start, ng, pf, strict = z(E, 0, np.int32), z(E, 0, np.int32), z(E, 0, np.int32), z(E, False, bool), z(E, False, bool)
+    cands, est, has = z((E, G, C), -1, np.int32), z((E, G, C, 2), 0.0, np.float32), z((E, G, C), False, bool)
+    verdict, misfit = z((E, G, O), False, bool), z((E, G, O), np.inf, np.float32)
+    search, revisit, truth = z((E, G, S), -1, np.int32), z((E, G), False, bool), z((E, T), -1, np.int32)
+    for e, st in enumerate(states):
+        sc = loop.scenes[st.ep.scene]
+        ids = {o.id: j for j, o in enumerate(sc.objects)}
+        b[e], start[e], ng[e], strict[e] = st.b, st.node, len(st.status), st.strict
+        pf[e] = loop.spec.reads and st.subgoals is None
+        for t, oid in enumerate(st.ep.goals):
+            truth[e, t] = ids.get(oid, -1)
+        for g in range(len(st.status)):
+            cs = st.cands[g][:C]
+            cands[e, g, : len(cs)] = cs
+            for j, x in enumerate(st.ests[g][:C]):
+                if x is not None:
+                    est[e, g, j], has[e, g, j] = x, True
+            if not loop.spec.reads:
+                if truth[e, g] >= 0:
+                    verdict[e, g, truth[e, g]] = True
+            elif st.subgoals is not None:
+                v = np.asarray(loop.verdicts[st.e][g])
+                verdict[e, g, : len(v)] = v[:O]
+                if loop.cfg.eval.fallback and loop.misfits:
+                    m = np.asarray(loop.misfits[st.e][g], np.float32)
+                    misfit[e, g, : len(m)] = np.where(np.isfinite(m), m, np.inf)[:O]
+                revisit[e, g] = bool(REVISIT.search(st.subgoals[g].text))
+            if loop.search and st.e < len(loop.search) and g < len(loop.search[st.e]):
+                s = list(loop.search[st.e][g])[:S]
+                search[e, g, : len(s)] = s
+    spec, ev = loop.spec, loop.cfg.eval
+    method = [np.full(E, x, bool) for x in (spec.straight, spec.optimal_order, spec.search and ev.search_nodes > 0,
+                                            spec.reads, ev.fallback, ev.look_closer)]
+    return Inputs(*map(jnp.asarray, (b, start, ng, pf, strict, cands, est, has, verdict, misfit, search, revisit, truth,
+                                     *method)))
+
+
+def initial_state(inp: Inputs, lam, world: World, fl: Flags, N: int, O: int) -> State:
+    """Every goal remaining, the first plan solved from the start node."""
+    E, G = inp.cands.shape[:2]
+    T = inp.truth.shape[1]
+    zi = lambda *s: jnp.zeros(s, jnp.int32)  # noqa: E731
+    zb = lambda *s: jnp.zeros(s, bool)  # noqa: E731
+    st = State(
+        order=jnp.broadcast_to(jnp.arange(G, dtype=jnp.int32), (E, G)), n_left=inp.num_goals.astype(jnp.int32),
+        planned=zi(E, G), n_planned=zi(E), cptr=zi(E, G), rejected=zi(E, G), status=zi(E, G), found=zb(E, T),
+        skip=zb(E, G, O), looked=zb(E, G, N), backup=jnp.full((E, G), -1, jnp.int32),
+        backup_misfit=jnp.full((E, G), jnp.inf, jnp.float32), fell_back=zb(E, G), node=inp.start_node.astype(jnp.int32),
+        steps=zi(E), look_steps=zi(E), length=jnp.zeros(E, jnp.float32), penetration=jnp.zeros(E, jnp.float32),
+        leg_kind=zi(E), leg_goal=zi(E), leg_target=zi(E), leg_xy=jnp.zeros((E, 2), jnp.float32), done=zb(E),
+        reason=zi(E), decl_goal=zi(E, G), decl_truth=zi(E, G), decl_obj=zi(E, G), decl_step=zi(E, G),
+        decl_xy=jnp.zeros((E, G, 2), jnp.float32), decl_fallback=zb(E, G), n_decl=zi(E), legs=zi(E))
+    st = jax.vmap(lambda s, i, lm: step.replan(s, i, world, lm, fl))(st, inp, lam)
+    return st.replace(planned=st.order, n_planned=st.n_left)
+
+
+# ----------------------------------------------------------------------------------------------------
+# The program
+
+
+def _select(mask, a, b):
+    return jax.tree.map(lambda x, y: jnp.where(mask.reshape(mask.shape + (1,) * (x.ndim - 1)), x, y), a, b)
+
+
+def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, *, fl: Flags, init, drive, look) -> State:
+    """Runs every episode of the batch to its end. scene_idx (E,) executor scene of each episode; start_pose
+    (E, 3); lam (E,) order penalty of each (a sweep's grid points are episodes too). Returns the final State."""
+    N, O = world.pos.shape[1], world.known.shape[1]
+    st = initial_state(inp, lam, world, fl, N, O)
+    d = init(scene_idx, start_pose)
+    in_ep = (0, 0, None, 0, 0)
+
+    def cond(c):
+        return jnp.any(~c[0].done)
+
+    def body(c):
+        st, d, pose = c
+        over = ~st.done & (st.steps + st.look_steps >= fl.max_steps)
+        left = jax.vmap(step._left_mask)(st)
+        st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
+                        status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
+                        leg_kind=jnp.where(over, NONE, st.leg_kind))
+        st = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, inp, world, pose, lam)
+        active = ~st.done & (st.leg_kind != NONE)
+        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, inp, world, pose)
+        allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
+        res = drive(scene_idx, d, pts, jnp.where(active, n, 0), jnp.where(active, allow, 0).astype(jnp.int32))
+        visible, _ = look(scene_idx, res.d)
+        pose = res.d.qpos[:, :3]
+        st = st.replace(steps=st.steps + jnp.where(active, res.steps, 0),
+                        length=st.length + jnp.where(active, res.length, 0.0),
+                        penetration=jnp.maximum(st.penetration, jnp.where(active, res.penetration, 0.0)),
+                        legs=st.legs + active.astype(jnp.int32))
+        after = jax.vmap(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
+                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, inp, world, pose, res.arrived, visible, lam)
+        return _select(active, after, st), res.d, pose
+
+    st, _, _ = jax.lax.while_loop(cond, body, (st, d, start_pose))
+    return st
+
+
+def compiled(ex, fl: Flags):
+    """The jitted program of an executor and flags (one trace per padded batch shape), kept on the executor."""
+    key = ("device_program", fl)
+    if key not in ex.cache:
+        ex.cache[key] = jax.jit(functools.partial(closed_loop, fl=fl, init=ex.init, drive=ex.drive, look=ex.look_fn))
+    return ex.cache[key]
+
+
+def _pad(x, E: int):
+    """Pads the leading axis to E by repeating the first row."""
+    return jax.tree.map(lambda a: jnp.concatenate([a, jnp.repeat(a[:1], E - a.shape[0], 0)]) if a.shape[0] < E else a, x)
+
+
+def run_device(loop, states: list, cfg: Config, progress=None) -> None:
+    """Runs `states` (host EpisodeStates, before any leg) on the device program and writes the outcome back
+    into them (status, found, declarations, steps, travel, the first plan)."""
+    if loop.spec.explores:
+        from ragnav_jax.errors import UserError
+
+        raise UserError("the device loop does not run the etpnav baseline (eval.engine=host runs it)")
+    if not states:
+        return
+    # sizes from the episodes and the config alone (not the method), so every method shares one compilation
+    T = max(len(st.ep.goals) for st in states)
+    G = max(T, max(len(st.status) for st in states), 1)
+    C = max([cfg.eval.candidates] + [len(c) for st in states for c in st.cands])
+    S = max(1, cfg.eval.search_nodes)
+    fl = flags_of(cfg, loop.look_cost)
+    world = world_of(loop)
+    prog = compiled(loop.ex, fl)
+    B = min(cfg.eval.batch_size, len(states))
+    for c0 in range(0, len(states), B):
+        chunk = states[c0 : c0 + B]
+        inp = _pad(inputs_of(loop, chunk, G, C, S, T), B)
+        sidx = _pad(jnp.asarray([st.s for st in chunk], jnp.int32), B)
+        start = _pad(jnp.asarray([[*loop.scenes[st.ep.scene].start.position[:2], loop.scenes[st.ep.scene].start.yaw]
+                                  for st in chunk], jnp.float32), B)
+        lam = jnp.full(B, cfg.planning.lam, jnp.float32)
+        out = jax.device_get(prog(world, inp, sidx, start, lam))
+        for i, st in enumerate(chunk):
+            write_back(st, jax.tree.map(lambda x, i=i: x[i], out), loop)
+        if progress is not None:
+            progress(len(chunk))
+
+
+def write_back(st, s: State, loop) -> None:
+    """Copies one episode's final device State into its host EpisodeState."""
+    G = len(st.status)
+    objs = loop.scenes[st.ep.scene].objects
+    st.status = [STATUS_NAMES[int(x)] for x in s.status[:G]]
+    st.found = [bool(x) for x in s.found[: len(st.ep.goals)]]
+    st.rejected = [int(x) for x in s.rejected[:G]]
+    st.cptr = [int(x) for x in s.cptr[:G]]
+    st.steps, st.look_steps = int(s.steps), int(s.look_steps)
+    st.length, st.penetration = float(s.length), float(s.penetration)
+    st.planned = [int(x) for x in s.planned[: int(s.n_planned)]]
+    st.remaining = [int(x) for x in s.order[: int(s.n_left)]]
+    st.node, st.done, st.reason = int(s.node), bool(s.done), REASON_NAMES[int(s.reason)]
+    st.declarations = []
+    for k in range(int(s.n_decl)):
+        j = int(s.decl_truth[k])
+        st.declarations.append({"goal": int(s.decl_goal[k]), "truth": j if j >= 0 else None,
+                                "object": objs[int(s.decl_obj[k])].id, "correct": j >= 0,
+                                "step": int(s.decl_step[k]), "xy": [round(float(x), 3) for x in s.decl_xy[k]],
+                                **({"fallback": True} if s.decl_fallback[k] else {})})
+    st.fell_back = {g for g in range(G) if s.fell_back[g]}
+

@@ -1,0 +1,158 @@
+"""The device closed loop (evaluation/loop/): the same outcomes as the host loop on the apartment, one
+trace per batch shape, and the configured order planner changes what it drives."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+from test_memory_streams import synthetic_stream
+
+from ragnav_jax.config import load_config
+from ragnav_jax.evaluation.episode import evaluate_navigation
+from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.loop import program
+from ragnav_jax.evaluation.verify import Verifier
+from ragnav_jax.language.episodes import Episode, load_episodes
+from ragnav_jax.memory.build import build_bank
+from ragnav_jax.memory.encoder import HashingEmbedder
+from ragnav_jax.world.scene import example_scene_path
+
+EPISODES = example_scene_path().parent / "episodes.jsonl"
+
+
+def _with(cfg, **kw):
+    return dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, **kw))
+
+
+@pytest.fixture(scope="module")
+def setup(apartment):
+    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])  # 6 episodes: two batches
+    stream = synthetic_stream(apartment)
+    emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
+    bank, _ = build_bank([apartment], [stream], cfg, embedder=emb)
+    ex = make_executor([apartment], cfg)
+    return cfg, bank, emb, ex, Verifier.build(emb, cfg)
+
+
+def _rows(setup, apartment, method, engine, episodes=None, **kw):
+    cfg, bank, emb, ex, ver = setup
+    cfg = _with(cfg, engine=engine, **kw)
+    episodes = episodes or load_episodes(EPISODES, [apartment])
+    rows, summary = evaluate_navigation(bank, [apartment], episodes, emb, cfg, method, executor=ex, verifier=ver)
+    return rows, summary
+
+
+METHODS = ("oracle", "ragnav", "remembr", "ragnav:no_topology")
+
+
+@pytest.fixture(scope="module")
+def both(setup, apartment):
+    """Rows of every method on the apartment from each engine; the device program is compiled once for all."""
+    cfg, bank, emb, ex, ver = setup
+    before = dict(ex.traces)
+    out = {eng: {m: _rows(setup, apartment, m, eng)[0] for m in METHODS} for eng in ("host", "device")}
+    return out, before
+
+
+def test_device_loop_matches_host_loop(setup, both):
+    (out, _), max_steps = both, setup[0].eval.max_steps
+    pairs = [(m, h, d) for m in METHODS for h, d in zip(out["host"][m], out["device"][m])]
+    same = [h["success"] == d["success"] and h["goal_status"] == d["goal_status"] for _, h, d in pairs]
+    assert np.mean(same) >= 0.8, [(m, h["episode"], h["goal_status"], d["goal_status"]) for (m, h, d), s in
+                                  zip(pairs, same) if not s]
+    for m in ("oracle", "ragnav"):
+        assert sum(r["success"] for r in out["device"][m]) >= sum(r["success"] for r in out["host"][m]) - 1
+    for _, h, d in pairs:
+        assert d["steps"] <= max_steps + 200
+        if h["success"] and d["success"] and h["rejected_candidates"] == d["rejected_candidates"]:
+            assert d["travel_distance_m"] == pytest.approx(h["travel_distance_m"], rel=0.35, abs=1.5)  # same legs
+
+
+def test_one_compilation_serves_every_method_and_batch(setup, both):
+    """Four methods, two batches each: the device program was traced once."""
+    progs = [v for k, v in setup[3].cache.items() if k[0] == "device_program"]
+    assert len(progs) == 1 and progs[0]._cache_size() == 1
+
+
+def _longest_written_order(bank, apartment, k=3):
+    """Object ids of k goals, written in the order whose route from the start is longest over the map."""
+    import itertools
+
+    from ragnav_jax.evaluation.episode import _oracle_node
+
+    cost = np.asarray(bank.memory.path_cost[0])
+    pos = np.asarray(bank.memory.position[0, :, :2])
+    start = int(np.argmin(np.linalg.norm(pos - np.asarray(apartment.start.position[:2]), axis=1)))
+    nodes = {o.id: _oracle_node(bank, 0, j) for j, o in enumerate(apartment.objects)}
+    ids = [i for i, n in nodes.items() if n >= 0 and np.isfinite(cost[start, n])]
+    rng = np.random.default_rng(0)
+    pick = list(rng.choice(ids, k, replace=False))
+
+    def route(order):
+        c, cur = 0.0, start
+        for i in order:
+            c, cur = c + cost[cur, nodes[i]], nodes[i]
+        return c
+
+    return max(itertools.permutations(pick), key=route)
+
+
+def test_order_penalty_reaches_the_device_loop(setup, apartment):
+    """A strict instruction written in its longest order: lambda = 0 lets the planner take a shorter order (the
+    strict episode then fails on order), a large lambda drives the written one."""
+    cfg, bank, emb, ex, ver = setup
+    goals = _longest_written_order(bank, apartment)
+    ep = Episode("lam-0", apartment.name, "visit them in order", tuple(goals), "text", "strict")
+    episodes = [ep, *load_episodes(EPISODES, [apartment])[:3]]  # the module's batch shape: no new compilation
+    out = {}
+    for lam in (0.0, 1.0e4):
+        c = dataclasses.replace(cfg, planning=dataclasses.replace(cfg.planning, lam=lam))
+        rows, _ = evaluate_navigation(bank, [apartment], episodes, emb, _with(c, engine="device"), "oracle",
+                                      executor=ex, verifier=ver)
+        out[lam] = rows[0]
+    assert out[1.0e4]["success"] and not out[0.0]["success"]
+    assert out[0.0]["reason"] == "order"
+    assert out[0.0]["travel_distance_m"] < out[1.0e4]["travel_distance_m"]
+
+
+def test_unknown_engine_is_a_config_error():
+    from ragnav_jax.errors import UserError
+
+    with pytest.raises(UserError, match="eval.engine"):
+        load_config(None, ["eval.engine=gpu"])
+
+
+def test_device_loop_refuses_etpnav_directly(setup, apartment):
+    from ragnav_jax.errors import UserError
+    from ragnav_jax.evaluation.episode import Loop, method_spec
+
+    cfg, bank, emb, ex, ver = setup
+    loop = Loop(method_spec("etpnav"), bank, [apartment], cfg, ex, {})
+    with pytest.raises(UserError, match="etpnav"):
+        program.run_device(loop, [object()], cfg)
+
+
+def test_closed_loop_sweep_matches_the_device_eval(setup, apartment):
+    """The sweep's closed-loop metric at the configured point (device candidate ranking, device judging) counts
+    the successes that `ragnav eval`'s device engine (host ranking, host rows) gets; lambda is a grid axis."""
+    from ragnav_jax.config import SweepAxes
+    from ragnav_jax.evaluation.loop.sweep_metric import closed_loop_metrics
+    from ragnav_jax.evaluation.sweep import evaluate_grid, make_grid
+    from ragnav_jax.retrieval.params import params_from_config
+
+    cfg, bank, emb, ex, ver = setup
+    episodes = load_episodes(EPISODES, [apartment])
+    mods = tuple(sorted({e.modality for e in episodes}))
+    sigma = cfg.retrieval.sigma
+    sweep = dataclasses.replace(cfg.sweep, axes=SweepAxes(sigma=(sigma, 0.25 * sigma), lam=(cfg.planning.lam,)),
+                                variants=("ragnav",), chunk_size=2)
+    c = dataclasses.replace(cfg, sweep=sweep)
+    grid = make_grid(c.sweep, params_from_config(c.retrieval), c.planning.lam)
+    metrics = closed_loop_metrics(c, bank, [apartment], episodes, emb, grid, mods, executor=ex, verifier=ver)
+    sums, stats = evaluate_grid(metrics, grid, chunk_size=2)
+    assert stats["chunks_computed"] == 1
+    rows, _ = _rows(setup, apartment, "ragnav", "device", episodes)
+    want = [sum(r["success"] for r in rows if r["modality"] == m) for m in mods]
+    assert sums["nav_success"][0].tolist() == want
+    assert 0.0 <= sums["nav_spl"][0].sum() <= sums["nav_success"][0].sum() + 1e-6
+    assert sums["nav_travel_m"][0].sum() == pytest.approx(sum(r["travel_distance_m"] for r in rows), rel=1e-3)
