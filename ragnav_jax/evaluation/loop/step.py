@@ -13,15 +13,14 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
+from ragnav_jax.evaluation.episode import CLOSER_GAP_M, SAME_INSTANCE_M
 from ragnav_jax.evaluation.loop import geometry as geo
 from ragnav_jax.evaluation.loop.state import APPROACH, CLOSER, FAILED, FOUND, NAV, NONE, SEARCH, WRONG, Flags
 from ragnav_jax.memory.topomap import segment_clearance
 from ragnav_jax.planning.costs import order_problem
 from ragnav_jax.planning.order import SOLVERS, pick_solver
 
-SAME_INSTANCE_M = 0.5  # episode.SAME_INSTANCE_M
 ROUTE_POINTS = 16  # waypoints a grid route keeps
-CLOSER_GAP_M = 0.6  # episode.CLOSER_GAP_M
 _INF = jnp.inf
 
 
