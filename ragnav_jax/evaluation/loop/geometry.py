@@ -311,37 +311,47 @@ def edge_plans(loop, b: int, K: int) -> tuple[np.ndarray, np.ndarray, np.ndarray
     return idx, plans, count
 
 
+def join_plans(pts, n, plans, cnt, planned):
+    """Waypoints of a polyline whose segments are replaced by their plans.
+
+    pts (L, 2) with n valid; plans (L-1, K, 2) and cnt (L-1,) each segment's plan (first point = the
+    segment's start), used where `planned` (L-1,) bool, else the straight segment. Returns ((L * K, 2)
+    points, count): each segment's plan without repeating its first point."""
+    L, K = pts.shape[0], plans.shape[1]
+    seg_valid = jnp.arange(L - 1) < n - 1
+    cnt = jnp.where(planned, cnt, 2)
+    add = jnp.where(seg_valid, cnt - 1, 0)  # points each segment adds
+    off = 1 + jnp.cumsum(add) - add  # where each segment's added points start
+    k = jnp.arange(1, K)
+    src = jnp.where(planned[:, None, None], plans[:, 1:],
+                    jnp.where((k == 1)[None, :, None], pts[1:, None], 0.0))  # (L-1, K-1, 2)
+    keep = seg_valid[:, None] & (k[None, :] < cnt[:, None])
+    dst = jnp.where(keep, off[:, None] + k[None, :] - 1, L * K)
+    out = jnp.zeros((L * K, 2), jnp.float32).at[0].set(pts[0])
+    out = out.at[dst.reshape(-1)].set(src.reshape(-1, 2), mode="drop")
+    return out, jnp.where(n > 0, 1 + add.sum(), 0)
+
+
+def densify_or_keys(way, m, pts, n, P: int):
+    """densify(way), or the polyline pts itself where the way would not fit the waypoint buffer (the host's rule)."""
+    dp, dn = densify(way, m, P)
+    sp, sn = densify(jnp.concatenate([pts, jnp.zeros((max(way.shape[0] - pts.shape[0], 0), 2), pts.dtype)]), n, P)
+    return jnp.where(m <= P, dp, sp), jnp.where(m <= P, dn, sn)
+
+
 def drive_route(nodes: jax.Array, n, pos: jax.Array, idx: jax.Array, plans: jax.Array, count: jax.Array,
                 P: int) -> tuple[jax.Array, jax.Array]:
-    """The waypoint buffer of a node path as driven (`Loop.drive_points(pos[nodes[:n]])`, padded as `_run_chunk`).
-
-    Each consecutive pair's local plan, joined without repeating the shared key pose, then `densify`d; the key
-    poses themselves where the joined way has more than P points. nodes (L,) int32 and count n (`path_nodes`);
-    pos (N, 2); idx, plans, count from `edge_plans` (a pair that is no edge is driven straight); P static.
-    Returns ((P, 2) waypoints, count int32).
-    """
-    L = nodes.shape[0]
+    """The waypoint buffer of a node path as driven (`Loop.drive_points(pos[nodes[:n]])`, padded as `_run_chunk`):
+    `join_plans` of each pair's local plan, then `densify_or_keys`. nodes (L,) int32 and count n
+    (`path_nodes`); pos (N, 2); idx, plans, count from `edge_plans` (a pair that is no edge is driven
+    straight); P static. Returns ((P, 2) waypoints, count int32)."""
     key = pos[nodes].astype(jnp.float32)  # (L, 2)
     n = jnp.asarray(n, jnp.int32)
-    Lb = max(P, L)
-    key = jnp.pad(key, ((0, Lb - L), (0, 0)))
-    if L < 2:
+    if nodes.shape[0] < 2:
         return densify(key, n, P)
-    u, v = nodes[:-1], nodes[1:]
-    e = idx[u, v]  # (L-1,)
-    has = e >= 0
-    cnt = jnp.where(jnp.arange(L - 1) < n - 1, jnp.where(has, count[jnp.maximum(e, 0)], 2), 0)
-    add = jnp.maximum(cnt - 1, 0)  # points each pair adds after its first
-    end = jnp.cumsum(add)
-    W = jnp.where(n > 0, 1 + end[-1], 0)
-    q = jnp.arange(P)
-    s = jnp.minimum(jnp.sum(end[None, :] < q[:, None], axis=1), L - 2)  # pair of each slot
-    t = jnp.clip(q - end[s] + add[s], 1, plans.shape[1] - 1)
-    pt = jnp.where(has[s][:, None], plans[jnp.maximum(e[s], 0), t], pos[v[s]])
-    way = jnp.where((q == 0)[:, None], key[:1], pt)
-    use = W <= P
-    pts = jnp.where(use, jnp.pad(way, ((0, Lb - P), (0, 0))), key)
-    return densify(pts, jnp.where(use, W, n), P)
+    e = idx[nodes[:-1], nodes[1:]]  # (L-1,)
+    way, m = join_plans(key, n, plans[jnp.maximum(e, 0)], count[jnp.maximum(e, 0)], e >= 0)
+    return densify_or_keys(way, m, key, n, P)
 
 
 # ----------------------------------------------------------------------------------------------------

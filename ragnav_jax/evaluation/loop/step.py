@@ -218,27 +218,6 @@ def next_leg(st, inp, w, pose, lam, fl: Flags):
     return st
 
 
-def _joined(pts, n, plans, cnt, planned):
-    """Waypoints of a polyline whose segments are replaced by their plans.
-
-    pts (L, 2) with n valid; plans (L-1, K, 2) and cnt (L-1,) each segment's plan (first point = the
-    segment's start), used where `planned` (L-1,) bool, else the straight segment. Returns ((L * K, 2)
-    points, count): each segment's plan without repeating its first point."""
-    L, K = pts.shape[0], plans.shape[1]
-    seg_valid = jnp.arange(L - 1) < n - 1
-    cnt = jnp.where(planned, cnt, 2)
-    add = jnp.where(seg_valid, cnt - 1, 0)  # points each segment adds
-    off = 1 + jnp.cumsum(add) - add  # where each segment's added points start
-    k = jnp.arange(1, K)
-    src = jnp.where(planned[:, None, None], plans[:, 1:],
-                    jnp.where((k == 1)[None, :, None], pts[1:, None], 0.0))  # (L-1, K-1, 2)
-    keep = seg_valid[:, None] & (k[None, :] < cnt[:, None])
-    dst = jnp.where(keep, off[:, None] + k[None, :] - 1, L * K)
-    out = jnp.zeros((L * K, 2), jnp.float32).at[0].set(pts[0])
-    out = out.at[dst.reshape(-1)].set(src.reshape(-1, 2), mode="drop")
-    return out, jnp.where(n > 0, 1 + add.sum(), 0)
-
-
 def _splice(pts, n, is_node, nodes, ends, w, b):
     """`_joined` with the World's local plan of each map edge between two key poses (is_node (L,) bool, nodes
     (L,) int32) and ends = (plans (2, K, 2), counts (2,), use (2,) bool): plans of the first and the last
@@ -251,21 +230,13 @@ def _splice(pts, n, is_node, nodes, ends, w, b):
     which = jnp.where((seg == 0) & end_use[0], 0, jnp.where((seg == n - 2) & end_use[1], 1, -1))
     plans = jnp.where((which >= 0)[:, None, None], end_plans[jnp.maximum(which, 0)], w.plans[b, jnp.maximum(pid, 0)])
     cnt = jnp.where(which >= 0, end_cnt[jnp.maximum(which, 0)], w.plan_count[b, jnp.maximum(pid, 0)])
-    return _joined(pts, n, plans, cnt, (which >= 0) | (pid >= 0))
+    return geo.join_plans(pts, n, plans, cnt, (which >= 0) | (pid >= 0))
 
 
 def _local(w, b, a, c, fl: Flags, anywhere: bool):
     """`geometry.local_route` on the episode's scene: ((ROUTE_POINTS, 2) points, count)."""
     return geo.local_route(a, c, _obs(w, b), w.grid_origin[b], w.grid_clear[b], w.grid_shape[b], fl.need, fl.tight,
                            anywhere, max_points=ROUTE_POINTS)
-
-
-def _densified(way, m, pts, n, fl: Flags):
-    """densify(way), or the polyline pts itself where the way would not fit the waypoint buffer (the host's rule)."""
-    P = fl.path_points
-    dp, dn = geo.densify(way, m, P)
-    sp, sn = geo.densify(jnp.concatenate([pts, jnp.zeros((max(way.shape[0] - pts.shape[0], 0), 2), pts.dtype)]), n, P)
-    return jnp.where(m <= P, dp, sp), jnp.where(m <= P, dn, sn)
 
 
 def _drive_points(pts, n, is_node, nodes, raw, w, b, fl: Flags):
@@ -282,9 +253,9 @@ def _drive_points(pts, n, is_node, nodes, raw, w, b, fl: Flags):
     way, m = _splice(pts, n, is_node, nodes, (jnp.stack([pad(p0), pad(p1)]), jnp.stack([n0, n1]), use), w, b)
     route = pts[:ROUTE_POINTS]  # (the caller's buffer holds at least ROUTE_POINTS)
     plans, cnt = jax.vmap(lambda a, c: _local(w, b, a, c, fl, False))(route[:-1], route[1:])
-    rway, rm = _joined(route, jnp.minimum(n, ROUTE_POINTS), plans, cnt, jnp.ones(ROUTE_POINTS - 1, bool))
-    dp, dn = _densified(way, m, pts, n, fl)
-    rp, rn = _densified(rway, rm, route, jnp.minimum(n, ROUTE_POINTS), fl)
+    rway, rm = geo.join_plans(route, jnp.minimum(n, ROUTE_POINTS), plans, cnt, jnp.ones(ROUTE_POINTS - 1, bool))
+    dp, dn = geo.densify_or_keys(way, m, pts, n, fl.path_points)
+    rp, rn = geo.densify_or_keys(rway, rm, route, jnp.minimum(n, ROUTE_POINTS), fl.path_points)
     return jnp.where(raw, rp, dp), jnp.where(raw, rn, dn)
 
 

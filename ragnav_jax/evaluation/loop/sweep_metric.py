@@ -111,7 +111,8 @@ def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, ranking: 
 
 def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embedder, modalities: Sequence[str],
                   executor=None, verifier=None):
-    """(LoopEpisodes, totals (Mods,) episodes per modality, host Loop) for RAGNav on these episodes."""
+    """(LoopEpisodes, totals (Mods,) episodes per modality, host Loop, the ranking's static settings) for RAGNav
+    on these episodes."""
     from ragnav_jax.evaluation.episode import (
         CANDIDATE_DEPTH,
         grounder,
