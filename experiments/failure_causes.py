@@ -28,7 +28,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ragnav_jax.evaluation.episode import SAME_INSTANCE_M, box_distance, method_spec, retrieve_candidates
+from ragnav_jax.evaluation.clearance import SAME_INSTANCE_M, box_distance
+from ragnav_jax.evaluation.methods import method_spec
+from ragnav_jax.evaluation.ranking import retrieve_candidates
 from ragnav_jax.evaluation.replay import load_eval_run
 from ragnav_jax.evaluation.verify import Verifier, recorded, said
 from ragnav_jax.io import write_text

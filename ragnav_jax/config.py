@@ -9,6 +9,7 @@ the dotted key. Later stages add their own sections here.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import types
 import typing
@@ -42,6 +43,66 @@ ROOM_TYPES = (
 def _check(ok: bool, key: str, why: str) -> None:
     if not ok:
         raise ConfigError(f"config key '{key}': {why}")
+
+
+@dataclasses.dataclass(frozen=True)
+class Hyper:
+    """One row of a hyperparameter table: what a section's field declares beyond its comment.
+
+    `hyper(...)` puts the rule on the field; `hyperparameters(section)` fills in name, type and default.
+    """
+
+    gt: float | None = None  # exclusive lower bound
+    ge: float | None = None  # inclusive lower bound
+    le: float | None = None  # inclusive upper bound
+    among: tuple[float, ...] = ()  # the only values allowed (a 0/1 switch); () = any within the bounds
+    sweep: bool = False  # a sweep.axes entry (SweepAxes)
+    tune: str = ""  # ragnav tune moves it, optimised as log(x) | logit(x) | raw x; "" = not tuned
+    name: str = ""
+    type: Any = float  # int | float
+    default: Any = None
+
+    @property
+    def rule(self) -> str:
+        """The range in words, as error messages give it: "must be in [1, 16]", "must be > 0", "must be 0 or 1"."""
+        if self.among:
+            return "must be " + " or ".join(f"{x:g}" for x in self.among)
+        lo = self.gt if self.gt is not None else self.ge
+        if lo is not None and self.le is not None:
+            return f"must be in {'(' if self.gt is not None else '['}{lo:g}, {self.le:g}]"
+        if lo is not None:
+            return f"must be {'>' if self.gt is not None else '>='} {lo:g}"
+        return f"must be <= {self.le:g}" if self.le is not None else "any value"
+
+    def allows(self, x: float) -> bool:
+        return ((not self.among or x in self.among) and (self.gt is None or x > self.gt)
+                and (self.ge is None or x >= self.ge) and (self.le is None or x <= self.le))
+
+    def check(self, key: str, values: typing.Iterable[float]) -> None:
+        """ConfigError naming `key` unless every value is in range."""
+        _check(all(self.allows(x) for x in values), key, self.rule)
+
+
+def hyper(default: float, *, gt: float | None = None, ge: float | None = None, le: float | None = None,
+          among: tuple[float, ...] = (), sweep: bool = False, tune: str = "") -> Any:
+    """A hyperparameter field: its default and range, and whether `ragnav sweep` / `ragnav tune` vary it."""
+    if tune not in ("", "log", "logit", "raw"):
+        raise ValueError(f"tune must be '', log, logit or raw, got {tune!r}")
+    return dataclasses.field(default=default, metadata={"hyper": Hyper(gt, ge, le, among, sweep, tune)})
+
+
+@functools.cache
+def hyperparameters(section: type) -> typing.Mapping[str, Hyper]:
+    """The section's hyperparameter table in field order: name -> Hyper (range, sweep, tune, type, default)."""
+    hints = typing.get_type_hints(section)
+    return types.MappingProxyType({
+        f.name: dataclasses.replace(f.metadata["hyper"], name=f.name, type=hints[f.name], default=f.default)
+        for f in dataclasses.fields(section) if "hyper" in f.metadata})
+
+
+def _check_hyperparameters(cfg: Any, section: str) -> None:
+    for name, h in hyperparameters(type(cfg)).items():
+        h.check(f"{section}.{name}", (getattr(cfg, name),))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -310,9 +371,10 @@ class ExploreConfig:
 class PlanningConfig:
     """Order planning (paper's Pi* objective), paths and guide (ragnav_jax/planning)."""
 
-    lam: float = 1.0e4  # metres charged per goal pair visited against the instruction order; 0 = free. Read by
-    # `ragnav plan` and the closed loop for strict instructions; the default keeps their order (a strict episode
-    # visited out of order fails), smaller values trade the order for travel (sweep.axes.lam)
+    lam: float = hyper(1.0e4, ge=0, sweep=True)  # metres charged per goal pair visited against the instruction
+    # order; 0 = free. Read by `ragnav plan` and the closed loop for strict instructions; the default keeps their
+    # order (a strict episode visited out of order fails), smaller values trade the order for travel (sweep.axes.lam:
+    # navigation metrics only)
     solver: str = "auto"  # auto (Held-Karp up to 16 goals, else local search) | brute_force | held_karp | local_search
     local_search_iters: int = 100  # improving moves per start at most
     top_k: int = 1  # candidates per goal; > 1 chooses candidate and order jointly (Held-Karp)
@@ -321,7 +383,7 @@ class PlanningConfig:
     turn_threshold_deg: float = 30.0  # heading changes below this are not announced in the guide
 
     def __post_init__(self):
-        _check(self.lam >= 0.0, "planning.lam", "must be >= 0")
+        _check_hyperparameters(self, "planning")
         solvers = ("auto", "brute_force", "held_karp", "local_search")
         _check(self.solver in solvers, "planning.solver", f"must be one of {', '.join(solvers)}")
         _check(self.local_search_iters >= 1, "planning.local_search_iters", "must be >= 1")
@@ -340,66 +402,61 @@ class RunConfig:
 
 @dataclasses.dataclass(frozen=True)
 class RetrievalConfig:
-    """Retrieval hyperparameters (see ragnav_jax/retrieval/params.py) and the method to run."""
+    """Retrieval hyperparameters (see ragnav_jax/retrieval/params.py) and the method to run.
+
+    The hyperparameter table: each `hyper` field is written once here with its default and valid range, whether
+    it is a sweep axis (SweepAxes) and whether `ragnav tune` moves it, optimised as log(x), logit(x) or raw x
+    (evaluation/tune.py). RetrievalParams has these fields and the ablation flags; its integer fields are the
+    int ones here.
+    """
 
     method: str = "ragnav"  # ragnav | ragnav:no_forest | ragnav:no_topology | ragnav:no_spatial | ragnav:no_boost | naive_rag | graphrag | lightrag
-    sigma: float = 2.0  # metres, S_spatial Gaussian width
-    eta: float = 0.3  # neighbour boosting coefficient
-    top_k: int = 8  # anchor-guided recall size K (<= 16)
-    hops: int = 2  # anchor validation neighbourhood, hops (<= 3)
-    boost_hops: int = 1
-    beam: int = 32  # forest beam width per level (<= 32) when a room phrase locks a region
-    anchor_threshold: float = 0.45
-    boost_threshold: float = 0.45
-    w_slot: float = 0.7  # instance phrase vs node fingerprint
-    match_threshold: float = 0.45  # head-noun similarity for an instance to count as the category (superlatives)
-    sigma_loc: float = 1.5  # metres, location hint Gaussian width
-    sigma_rel: float = 3.0  # metres, instance-level "A near B" Gaussian width (ours; retrieval/score.py)
-    w_loc: float = 1.0
-    w_sensor: float = 1.0
-    w_room: float = 1.0  # soft room term from the forest's summary labels (0: off)
-    tau_room: float = 0.05
-    forest_lock: float = 0.0  # 1: a room phrase also prunes the leaves outside the beam's region (the paper's hard
-    # hierarchical pruning); 0: the forest's labels rank regions through the soft room term only (ours; see README)
+    sigma: float = hyper(2.0, gt=0, sweep=True, tune="log")  # metres, S_spatial Gaussian width
+    eta: float = hyper(0.3, sweep=True, tune="log")  # neighbour boosting coefficient
+    top_k: int = hyper(8, ge=1, le=16, sweep=True)  # anchor-guided recall size K (params.MAX_K)
+    hops: int = hyper(2, ge=0, le=3, sweep=True)  # anchor validation neighbourhood, hops (params.MAX_HOPS)
+    boost_hops: int = hyper(1, ge=0, le=1, sweep=True)  # neighbour boosting neighbourhood, hops
+    beam: int = hyper(32, ge=1, le=32, sweep=True)  # forest beam width per level (params.MAX_BEAM) when a room
+    # phrase locks a region
+    anchor_threshold: float = hyper(0.45, sweep=True, tune="raw")  # similarity for a node to match the anchor
+    boost_threshold: float = hyper(0.45, sweep=True, tune="raw")  # score a neighbour needs to count as relevant
+    w_slot: float = hyper(0.7, sweep=True, tune="logit")  # instance phrase vs node fingerprint
+    match_threshold: float = hyper(0.45, sweep=True)  # head-noun similarity for an instance to count as the
+    # category (superlatives)
+    sigma_loc: float = hyper(1.5, gt=0, sweep=True, tune="log")  # metres, location hint Gaussian width
+    sigma_rel: float = hyper(3.0, gt=0)  # metres, instance-level "A near B" Gaussian width (ours; retrieval/score.py)
+    w_loc: float = hyper(1.0, sweep=True, tune="log")  # exponent of the location term (0 ignores hints)
+    w_sensor: float = hyper(1.0, sweep=True, tune="log")  # exponent of the sensor term (0 ignores sensor constraints)
+    w_room: float = hyper(1.0)  # soft room term from the forest's summary labels (0: off)
+    tau_room: float = hyper(0.05)  # softness of the room term (similarity units)
+    forest_lock: float = hyper(0.0, among=(0.0, 1.0))  # 1: a room phrase also prunes the leaves outside the beam's
+    # region (the paper's hard hierarchical pruning); 0: the forest's labels rank regions through the soft room
+    # term only (ours; see README)
 
     def __post_init__(self):
-        _check(self.sigma > 0 and self.sigma_loc > 0 and self.sigma_rel > 0, "retrieval.sigma",
-               "sigma, sigma_loc and sigma_rel must be > 0")
-        _check(1 <= self.top_k <= 16, "retrieval.top_k", "must be in [1, 16]")
-        _check(0 <= self.hops <= 3 and 0 <= self.boost_hops <= 1, "retrieval.hops", "hops in [0, 3], boost_hops in [0, 1]")
-        _check(1 <= self.beam <= 32, "retrieval.beam", "must be in [1, 32]")
-        _check(self.forest_lock in (0.0, 1.0), "retrieval.forest_lock", "must be 0 or 1")
+        _check_hyperparameters(self, "retrieval")
 
 
-@dataclasses.dataclass(frozen=True)
-class SweepAxes:
-    """Values of each swept hyperparameter (empty: not varied, the retrieval/planning section's value)."""
+# sweep.axes: the sweepable hyperparameters (sweep=True) of the retrieval section, then the planning lambda.
+_SWEEPABLE = {name: h for section in (RetrievalConfig, PlanningConfig)
+              for name, h in hyperparameters(section).items() if h.sweep}
 
-    sigma: tuple[float, ...] = ()
-    eta: tuple[float, ...] = ()
-    top_k: tuple[int, ...] = ()
-    hops: tuple[int, ...] = ()
-    boost_hops: tuple[int, ...] = ()
-    beam: tuple[int, ...] = ()
-    anchor_threshold: tuple[float, ...] = ()
-    boost_threshold: tuple[float, ...] = ()
-    w_slot: tuple[float, ...] = ()
-    match_threshold: tuple[float, ...] = ()
-    sigma_loc: tuple[float, ...] = ()
-    w_loc: tuple[float, ...] = ()
-    w_sensor: tuple[float, ...] = ()
-    lam: tuple[float, ...] = ()  # planning lambda: enters navigation metrics only (not retrieval accuracy)
 
-    def __post_init__(self):
-        for f in dataclasses.fields(self):
-            v = getattr(self, f.name)
-            _check(len(set(v)) == len(v), f"sweep.axes.{f.name}", "values must be distinct")
-        _check(all(x > 0 for x in self.sigma + self.sigma_loc), "sweep.axes.sigma", "sigma and sigma_loc must be > 0")
-        _check(all(1 <= x <= 16 for x in self.top_k), "sweep.axes.top_k", "must be in [1, 16]")
-        _check(all(0 <= x <= 3 for x in self.hops) and all(0 <= x <= 1 for x in self.boost_hops), "sweep.axes.hops",
-               "hops in [0, 3], boost_hops in [0, 1]")
-        _check(all(1 <= x <= 32 for x in self.beam), "sweep.axes.beam", "must be in [1, 32]")
-        _check(all(x >= 0 for x in self.lam), "sweep.axes.lam", "must be >= 0")
+def _check_axes(axes) -> None:
+    for name, h in _SWEEPABLE.items():
+        values = getattr(axes, name)
+        _check(len(set(values)) == len(values), f"sweep.axes.{name}", "values must be distinct")
+        h.check(f"sweep.axes.{name}", values)
+
+
+SweepAxes = dataclasses.make_dataclass(
+    "SweepAxes",
+    [(name, tuple[h.type, ...], dataclasses.field(default=())) for name, h in _SWEEPABLE.items()],
+    namespace={"__module__": __name__, "__post_init__": _check_axes,
+               "__doc__": "Values of each swept hyperparameter (empty: not varied, the retrieval/planning section's "
+                          "value). One field per sweepable hyperparameter (RetrievalConfig, then planning.lam)."},
+    frozen=True,
+)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -425,7 +482,7 @@ class SweepConfig:
         _check(self.pause_s >= 0, "sweep.pause_s", "must be >= 0")
 
 
-TUNABLE = ("sigma", "eta", "sigma_loc", "w_slot", "w_loc", "w_sensor", "anchor_threshold", "boost_threshold")
+TUNABLE = tuple(name for name, h in hyperparameters(RetrievalConfig).items() if h.tune)  # RetrievalConfig order
 
 
 @dataclasses.dataclass(frozen=True)
@@ -454,9 +511,9 @@ class TuneConfig:
 
 @dataclasses.dataclass(frozen=True)
 class EvalConfig:
-    """Closed-loop navigation evaluation (`ragnav eval`, ragnav_jax/evaluation/episode.py)."""
+    """Closed-loop navigation evaluation (`ragnav eval`, ragnav_jax/evaluation/navigate.py)."""
 
-    method: str = "ragnav"  # see evaluation/episode.py NAV_METHODS
+    method: str = "ragnav"  # see evaluation/methods.py NAV_METHODS
     candidates: int = 4  # retrieved candidates per subgoal (top-k) the reflection may fall back to
     retries: int = 3  # rejected candidates per goal before it is given up
     max_steps: int = 3000  # control steps per episode (the step budget; 0.1 s each by default)
@@ -471,7 +528,10 @@ class EvalConfig:
     # per order inversion; the loop itself keeps a strict instruction's order)
     batch_size: int = 512  # episodes executed together in one vmapped call
     engine: str = "host"  # "device": the whole closed loop as one jitted program (evaluation/loop/; not etpnav,
-    # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/episode.py
+    # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/host_loop.py
+    refill: float = 0.5  # device engine: share of the legs going that end before the loop reflects on them and
+    # starts their next legs while the others drive on (1.0: every leg of the batch ends first). Rows do not
+    # depend on it; speed does (short legs stop waiting for the batch's longest)
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)
@@ -500,6 +560,7 @@ class EvalConfig:
         _check(self.candidates >= 1 and self.retries >= 0, "eval.candidates", "candidates >= 1 and retries >= 0")
         _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
         _check(self.engine in ("host", "device"), "eval.engine", "must be 'host' or 'device'")
+        _check(0.0 < self.refill <= 1.0, "eval.refill", "must be in (0, 1]")
         _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")

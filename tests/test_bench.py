@@ -177,7 +177,7 @@ def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, ap
 
     from ragnav_jax.bench import sections
     from ragnav_jax.bench.report import comparison_table
-    from ragnav_jax.evaluation import episode
+    from ragnav_jax.evaluation import host_loop
     from ragnav_jax.evaluation.loop import program
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.encoder import HashingEmbedder
@@ -207,11 +207,11 @@ def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, ap
             program.run_device(executor, states, cfg)
         else:
             for c0 in range(0, len(states), 2):  # host batches of 2
-                episode._run_chunk(executor, states[c0 : c0 + 2], 2, cfg)
+                host_loop._run_chunk(executor, states[c0 : c0 + 2], 2, cfg)
         return [{"success": all(st.found), "goal_status": list(st.status), "steps": st.steps + st.look_steps}
                 for st in states], {}
 
-    monkeypatch.setattr(episode, "_run_chunk", loop_stub("host"))
+    monkeypatch.setattr(host_loop, "_run_chunk", loop_stub("host"))
     monkeypatch.setattr(program, "run_device", loop_stub("device"))
     monkeypatch.setattr(sections, "execute_stage", lambda: fake_evaluate)
     monkeypatch.setattr(sections.experiment("bench_sim"), "bench_mjx",
@@ -223,7 +223,7 @@ def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, ap
            "embedder": HashingEmbedder(dim=64), "episodes": eps}
     monkeypatch.setitem(sections._ARTIFACTS, (p.name, 1), art)
     res = sections.bench_closed_loop(p, lambda s: None)
-    assert not hasattr(episode._run_chunk, "__wrapped__") and not hasattr(program.run_device, "__wrapped__")
+    assert not hasattr(host_loop._run_chunk, "__wrapped__") and not hasattr(program.run_device, "__wrapped__")
     assert all(seen)  # every replay started from copies of the states as they were before the loop
     assert res["distinct_episodes"] == 3 and res["episodes"] == 6 and res["env_steps_per_s"] == 960.0
     assert set(res["methods"]) == {"oracle", "ragnav"} and len(res["comparisons"]) == 2

@@ -1,4 +1,5 @@
 import dataclasses
+import re
 from pathlib import Path
 
 import pytest
@@ -47,6 +48,13 @@ def test_config_is_frozen():
         ("world.min_rooms.x=3", "'world.min_rooms': expected an integer"),
         ("world.min_rooms=12", "world.min_rooms"),
         ("world.num_scenes=0", "world.num_scenes"),
+        ("retrieval.sigma_loc=0", "'retrieval.sigma_loc': must be > 0"),
+        ("retrieval.boost_hops=2", "'retrieval.boost_hops': must be in [0, 1]"),
+        ("retrieval.forest_lock=0.5", "'retrieval.forest_lock': must be 0 or 1"),
+        ("sweep.axes.top_k=[8,17]", "'sweep.axes.top_k': must be in [1, 16]"),
+        ("sweep.axes.sigma_loc=[1,-1]", "'sweep.axes.sigma_loc': must be > 0"),
+        ("sweep.axes.lam=[-1]", "'sweep.axes.lam': must be >= 0"),
+        ("sweep.axes.sigma_rel=[1]", "unknown config key 'sweep.axes.sigma_rel'"),
         ("novalue", "must look like key.sub=value"),
     ],
 )
@@ -112,3 +120,47 @@ def test_retrieval_defaults_sweep_axes_and_tunables_name_retrieval_params_fields
     assert set(TUNABLE) <= set(fields) - set(INT_FIELDS) - set(FLAGS)
     p = params_from_config(RetrievalConfig(sigma=3.5, top_k=4))
     assert float(p.sigma) == 3.5 and int(p.top_k) == 4 and p.eta == np.float32(RetrievalConfig().eta)
+
+
+def _outside(h) -> list:
+    """Values just outside a hyperparameter's declared range (none when it has no range)."""
+    if h.among:
+        return [(h.among[0] + h.among[1]) / 2]
+    out = [h.gt] if h.gt is not None else [h.ge - 1] if h.ge is not None else []
+    return out + ([h.le + 1] if h.le is not None else [])
+
+
+def test_hyperparameter_table_drives_range_checks_sweep_axes_tuning_and_params():
+    """RetrievalConfig's table (config.hyper fields) is the one list: the sweepable and tunable sets come from it, every
+    sweepable field is a SweepAxes field of its type, a value outside a field's range is refused naming that field in
+    both sections, and RetrievalParams has exactly the table's fields (integers where the table says int) and the flags."""
+    from ragnav_jax.config import TUNABLE, PlanningConfig, RetrievalConfig, SweepAxes, hyperparameters
+    from ragnav_jax.evaluation.tune import POSITIVE, UNIT
+    from ragnav_jax.retrieval.params import FLAGS, INT_FIELDS, RetrievalParams
+
+    table = hyperparameters(RetrievalConfig)
+    assert set(table) == {f.name for f in dataclasses.fields(RetrievalConfig)} - {"method"}
+    assert [f.name for f in dataclasses.fields(RetrievalParams)] == [*table, *FLAGS]
+    assert {n for n, h in table.items() if h.sweep} == {
+        "sigma", "eta", "top_k", "hops", "boost_hops", "beam", "anchor_threshold", "boost_threshold", "w_slot",
+        "match_threshold", "sigma_loc", "w_loc", "w_sensor"}
+    assert set(TUNABLE) == {"sigma", "eta", "sigma_loc", "w_slot", "w_loc", "w_sensor", "anchor_threshold",
+                            "boost_threshold"}
+    assert (set(POSITIVE), set(UNIT)) == ({"sigma", "sigma_loc", "w_loc", "w_sensor", "eta"}, {"w_slot"})
+    assert set(INT_FIELDS) == {"top_k", "hops", "boost_hops", "beam"}
+    axes = {f.name: f.type for f in dataclasses.fields(SweepAxes)}
+    sweepable = {n: h for n, h in [*table.items(), *hyperparameters(PlanningConfig).items()] if h.sweep}
+    assert axes == {n: tuple[h.type, ...] for n, h in sweepable.items()} and list(axes)[-1] == "lam"
+    assert load_config(None, ["sweep.axes.top_k=[1,16]", "sweep.axes.sigma=[0.5,4]"]).sweep.axes.top_k == (1, 16)
+
+    checked = 0
+    for section, hypers in (("retrieval", table), ("sweep.axes", sweepable)):
+        for name, h in hypers.items():
+            for bad in _outside(h):
+                value = f"[{h.default}, {bad}]" if section == "sweep.axes" else bad
+                with pytest.raises(ConfigError, match=rf"'{section}\.{name}': {re.escape(h.rule)}"):
+                    load_config(None, [f"{section}.{name}={value}"])
+                checked += 1
+    assert checked >= 10  # sigma, sigma_loc, top_k, hops, boost_hops, beam (both sections), sigma_rel, forest_lock, lam
+    with pytest.raises(ConfigError, match=r"'sweep.axes.eta': values must be distinct"):
+        SweepAxes(eta=(0.5, 0.5))

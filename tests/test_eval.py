@@ -11,8 +11,10 @@ from test_memory_streams import synthetic_stream
 
 from ragnav_jax.cli import main
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import NAV_METHODS, evaluate_navigation, method_spec, plan_order
 from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.host_loop import plan_order
+from ragnav_jax.evaluation.methods import NAV_METHODS, method_spec
+from ragnav_jax.evaluation.navigate import evaluate_navigation
 from ragnav_jax.language.episodes import Episode, load_episodes
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.memory.build import build_bank
@@ -170,7 +172,7 @@ def test_eval_cli_malformed_episodes_exit_2(tmp_path, capsys):
 
 
 def test_distinct_instances_picks_one_candidate_per_instance():
-    from ragnav_jax.evaluation.episode import distinct_instances
+    from ragnav_jax.evaluation.ranking import distinct_instances
 
     assert distinct_instances([3, 3, 5, -1, -1, 5, 7], 4) == [0, 2, 3, 4]  # -1: no instance, always distinct
     assert distinct_instances([2, 2, 2], 2) == [0, 1]  # fewer instances than k: topped up in rank order
@@ -180,7 +182,7 @@ def test_distinct_instances_picks_one_candidate_per_instance():
 def test_approach_ring_stops_at_the_gap_from_the_footprint():
     from types import SimpleNamespace
 
-    from ragnav_jax.evaluation.episode import approach_ring, box_distance
+    from ragnav_jax.evaluation.clearance import approach_ring, box_distance
 
     c, half = np.array([2.0, -1.0], np.float32), np.array([0.4, 0.25], np.float32)
     ring = approach_ring(c, half, 0.6)
@@ -217,7 +219,7 @@ def test_attrs_match_reads_words_of_attribute_phrases():
 @given(st_.lists(st_.tuples(st_.floats(-1, 3), st_.floats(-1, 3), st_.booleans(), st_.booleans(), st_.booleans()),
                  min_size=1, max_size=12))
 def test_candidate_order_properties(nodes):
-    from ragnav_jax.evaluation.episode import candidate_order
+    from ragnav_jax.evaluation.ranking import candidate_order
     from ragnav_jax.retrieval.kernels import NEG
 
     kept_flag = np.array([n[2] for n in nodes])
@@ -236,7 +238,7 @@ def test_candidate_order_properties(nodes):
 def test_reflection_falls_back_on_the_next_ranked_candidate_only(setup, apartment):
     """Rejected candidates hand over to the method's own next candidate; once they are spent the goal is a
     recorded failure (no lookup outside the ranking: that would mask the retrieval being evaluated)."""
-    from ragnav_jax.evaluation.episode import EpisodeState, Loop
+    from ragnav_jax.evaluation.host_loop import EpisodeState, Loop
 
     cfg, bank, streams, emb, ex = setup
     ep = Episode("t", apartment.name, "Go to the fridge.", ("fridge_1",), "text", "strict")
@@ -353,7 +355,7 @@ def test_paired_comparison_counts_episodes_and_goals():
 def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
     """Candidates come from the method's own ranking; the pre-check drops those the captions contradict and
     never adds one. The top-1 for retrieval accuracy stays the kernel's."""
-    from ragnav_jax.evaluation.episode import retrieve_candidates, ruled_out
+    from ragnav_jax.evaluation.ranking import retrieve_candidates, ruled_out
     from ragnav_jax.retrieval.evaluate import prepare_batch
 
     cfg, bank, streams, emb, ex = setup
@@ -381,7 +383,7 @@ def test_precheck_uses_the_memory_not_the_scene(setup, apartment):
 @settings(max_examples=60, deadline=None)
 @given(st_.integers(0, 2**31 - 1))
 def test_closest_view_is_the_nearest_key_pose_that_recorded_the_instance(seed):
-    from ragnav_jax.evaluation.episode import closest_view
+    from ragnav_jax.evaluation.ranking import closest_view
 
     rng = np.random.default_rng(seed)
     N, S = int(rng.integers(1, 9)), int(rng.integers(1, 4))
@@ -398,7 +400,7 @@ def test_closest_view_is_the_nearest_key_pose_that_recorded_the_instance(seed):
 
 
 def test_view_nodes_moves_only_the_first_candidate_of_each_instance():
-    from ragnav_jax.evaluation.episode import view_nodes
+    from ragnav_jax.evaluation.ranking import view_nodes
 
     # nodes 0..3 on a line; node 3 recorded instance 0 from closest, node 2 instance 1
     node_pos = np.array([[0, 0], [1, 0], [2, 0], [3, 0]], np.float32)
@@ -414,7 +416,8 @@ def test_view_nodes_moves_only_the_first_candidate_of_each_instance():
 def test_approach_route_goes_round_a_small_obstacle_without_a_map_detour(setup, apartment):
     """Stops on opposite sides of a piece of furniture: the route bends round it with the local planner
     (clear of everything by the robot's radius) instead of going back over the key-pose map."""
-    from ragnav_jax.evaluation.episode import GRID_WINDOW_M, EpisodeState, Loop, approach_ring, segment_clearance_np
+    from ragnav_jax.evaluation.clearance import GRID_WINDOW_M, approach_ring, segment_clearance_np
+    from ragnav_jax.evaluation.host_loop import EpisodeState, Loop
 
     cfg, bank, streams, emb, ex = setup
     loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
@@ -449,7 +452,8 @@ def grid_graphs(setup, apartment):
     that clear the robot with the planner's margin, and those it just fits in."""
     import networkx as nx
 
-    from ragnav_jax.evaluation.episode import TIGHT_GAP_M, Loop
+    from ragnav_jax.evaluation.clearance import TIGHT_GAP_M
+    from ragnav_jax.evaluation.host_loop import Loop
 
     cfg, bank, streams, emb, ex = setup
     loop = Loop(method_spec("ragnav"), bank, [apartment], cfg, ex, streams)
@@ -470,7 +474,7 @@ def grid_graphs(setup, apartment):
 
 
 def _cell_xy(lo, cell):
-    from ragnav_jax.evaluation.episode import GRID_M
+    from ragnav_jax.evaluation.clearance import GRID_M
 
     return (lo + np.asarray(cell, np.float32) * GRID_M).astype(np.float32)
 
@@ -484,7 +488,7 @@ def test_local_planner_finds_a_way_wherever_networkx_does(grid_graphs, data):
     with networkx's connectivity."""
     import networkx as nx
 
-    from ragnav_jax.evaluation.episode import segment_clearance_np
+    from ragnav_jax.evaluation.clearance import segment_clearance_np
 
     loop, lo, clear, graphs = grid_graphs
     cells = sorted(graphs["need"].nodes)
@@ -529,7 +533,8 @@ def test_approach_stops_where_the_robot_can_get(grid_graphs, setup, apartment):
     furniture)."""
     import networkx as nx
 
-    from ragnav_jax.evaluation.episode import GRID_M, EpisodeState, approach_ring, segment_clearance_np
+    from ragnav_jax.evaluation.clearance import GRID_M, approach_ring, segment_clearance_np
+    from ragnav_jax.evaluation.host_loop import EpisodeState
 
     loop, lo, clear, graphs = grid_graphs
     cfg = setup[0]

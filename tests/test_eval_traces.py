@@ -5,8 +5,8 @@ waypoints, array arguments)."""
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import evaluate_navigation
 from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.navigate import evaluate_navigation
 from ragnav_jax.language.episodes import load_episodes
 from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder

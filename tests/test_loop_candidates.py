@@ -1,4 +1,4 @@
-"""loop/candidates.py against the host code it replaces (episode.py: candidate_order, distinct_instances, the
+"""loop/candidates.py against the host code it replaces (ranking.py: candidate_order, distinct_instances, the
 pre-check's keep-all rule, view_nodes), on random small slots and on every subgoal slot of the apartment."""
 
 import dataclasses
@@ -13,17 +13,17 @@ from hypothesis.extra.numpy import arrays
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation import episode
-from ragnav_jax.evaluation.episode import (
+from ragnav_jax.evaluation import ranking
+from ragnav_jax.evaluation.loop.candidates import rank_all, rank_candidates
+from ragnav_jax.evaluation.methods import method_spec
+from ragnav_jax.evaluation.ranking import (
     CANDIDATE_DEPTH,
     _kernel_ranked,
     _ranked_terms,
     candidate_order,
     distinct_instances,
-    method_spec,
     view_nodes,
 )
-from ragnav_jax.evaluation.loop.candidates import rank_all, rank_candidates
 from ragnav_jax.language.episodes import load_episodes
 from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
@@ -181,7 +181,7 @@ def test_apartment_slots_match_kernel_ranked(apartment_setup, apartment, method,
     (k 16: the ranking's every node, repeated instances)."""
     cfg, bank, episodes, emb, batch, meta = apartment_setup
     # only times one slot's scoring (a compilation of its own); the ranking never reads it
-    monkeypatch.setattr(episode, "_score_single", lambda *a: None, raising=False)
+    monkeypatch.setattr(ranking, "_score_single", lambda *a: None, raising=False)
     cfg = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, widen=widen, closest_view=view, candidates=k))
     spec = method_spec(method)
     host = _kernel_ranked(spec, bank, [apartment], episodes, emb, cfg, None, None)

@@ -1,6 +1,6 @@
 """loop/geometry.py against the host code it replaces: memory/paths.py's reconstruct_path (and networkx),
-execute.py's densify + pad_points, episode.py's approach_ring and Loop.attach / way_exists / approach_points /
-drive_points, on small random inputs and on the apartment; every kernel under jit, the apartment's under vmap."""
+execute.py's densify + pad_points, clearance.py's approach_ring and host_loop.py's Loop.attach / way_exists /
+approach_points / drive_points, on small random inputs and on the apartment; every kernel under jit, the apartment's under vmap."""
 
 import dataclasses
 import functools
@@ -16,9 +16,11 @@ from hypothesis import strategies as st
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import GRID_M, TIGHT_GAP_M, EpisodeState, Loop, approach_ring, method_spec
+from ragnav_jax.evaluation.clearance import GRID_M, TIGHT_GAP_M, approach_ring
 from ragnav_jax.evaluation.execute import densify, make_executor, pad_points
+from ragnav_jax.evaluation.host_loop import EpisodeState, Loop
 from ragnav_jax.evaluation.loop import geometry as geo
+from ragnav_jax.evaluation.methods import method_spec
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder

@@ -11,17 +11,11 @@ import pytest
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import (
-    ESCAPE_M,
-    GRID_M,
-    TIGHT_GAP_M,
-    Loop,
-    approach_ring,
-    method_spec,
-    segment_clearance_np,
-)
+from ragnav_jax.evaluation.clearance import ESCAPE_M, GRID_M, TIGHT_GAP_M, approach_ring, segment_clearance_np
 from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.host_loop import Loop
 from ragnav_jax.evaluation.loop import geometry as geo
+from ragnav_jax.evaluation.methods import method_spec
 from ragnav_jax.memory.build import build_bank
 from ragnav_jax.memory.encoder import HashingEmbedder
 

@@ -8,9 +8,9 @@ import pytest
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import evaluate_navigation
 from ragnav_jax.evaluation.execute import make_executor
 from ragnav_jax.evaluation.loop import program
+from ragnav_jax.evaluation.navigate import evaluate_navigation
 from ragnav_jax.evaluation.verify import Verifier
 from ragnav_jax.language.episodes import Episode, load_episodes
 from ragnav_jax.memory.build import build_bank
@@ -78,7 +78,7 @@ def _longest_written_order(bank, apartment, k=3):
     """Object ids of k goals, written in the order whose route from the start is longest over the map."""
     import itertools
 
-    from ragnav_jax.evaluation.episode import _oracle_node
+    from ragnav_jax.evaluation.ranking import _oracle_node
 
     cost = np.asarray(bank.memory.path_cost[0])
     pos = np.asarray(bank.memory.position[0, :, :2])
@@ -124,7 +124,8 @@ def test_unknown_engine_is_a_config_error():
 
 def test_device_loop_refuses_etpnav_directly(setup, apartment):
     from ragnav_jax.errors import UserError
-    from ragnav_jax.evaluation.episode import Loop, method_spec
+    from ragnav_jax.evaluation.host_loop import Loop
+    from ragnav_jax.evaluation.methods import method_spec
 
     cfg, bank, emb, ex, ver = setup
     loop = Loop(method_spec("etpnav"), bank, [apartment], cfg, ex, {})

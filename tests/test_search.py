@@ -11,8 +11,8 @@ from hypothesis.extra import numpy as hnp
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.episode import evaluate_navigation
 from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.navigate import evaluate_navigation
 from ragnav_jax.evaluation.search import search_nodes, spread
 from ragnav_jax.evaluation.verify import Verifier, memory_views
 from ragnav_jax.language.episodes import Episode

@@ -21,7 +21,7 @@ from ragnav_jax.sim.model import (
     scene_mj_model,
     slot_counts,
 )
-from ragnav_jax.sim.sensors import lidar_angles, lidar_scan
+from ragnav_jax.sim.sensors import camera_visibility, lidar_angles, lidar_scan, look_around
 from ragnav_jax.world.generator import generate_scenes
 
 SIM = SimConfig(lidar_rays=48)
@@ -175,3 +175,33 @@ def test_brax_wrappers(apartment):
     np.testing.assert_array_equal(state.info["steps"], [1, 1])  # auto-reset after 3 steps
     assert set(state.metrics) == {"distance", "visible_objects", "penetration", "success"}
     assert step._cache_size() == 1
+
+
+def test_look_around_is_the_camera_turned_in_place(scenes, template):
+    """look_around (lines of sight cast once) sees what camera_visibility sees at some heading of the turn."""
+    geo = scene_geometry(scenes, template)
+    m, axes = batch_model(template.mx, geo)
+    O = template.layout.objects
+    geom = jnp.arange(template.layout.obj_geom0, template.layout.obj_geom0 + O, dtype=jnp.int32)
+    rb = template.layout.robot_body
+    headings = jnp.linspace(0, 2 * np.pi, 8, endpoint=False)
+    poses = np.stack([_poses(s, 5, seed=7 + b) for b, s in enumerate(scenes)])  # (B, 5, 3)
+    objs = np.zeros((len(scenes), O, 2, 3), np.float32)
+    objs[..., 1, :] = 0.01
+    for b, s in enumerate(scenes):
+        for j, o in enumerate(s.objects):
+            objs[b, j] = o.position, o.size
+    mask = jnp.asarray(objs[..., 1, 0] > 0.011)
+
+    def both(m, poses, objs, mask):
+        def one(p):
+            d = initial_data(m, p)
+            turned = jax.vmap(lambda h: camera_visibility(m, d.replace(qpos=d.qpos.at[2].set(h)), objs[:, 0], objs[:, 1],
+                                                          mask, geom, SIM, rb).visible)(headings)
+            return look_around(m, d, objs[:, 0], objs[:, 1], mask, geom, SIM, rb, headings)[0], turned.any(0)
+
+        return jax.vmap(one)(poses)
+
+    got, want = jax.jit(jax.vmap(both, in_axes=(axes, 0, 0, 0)))(m, jnp.asarray(poses), jnp.asarray(objs), mask)
+    np.testing.assert_array_equal(np.asarray(got), np.asarray(want))
+    assert np.asarray(want).any() and not np.asarray(want).all()  # some objects seen, not all

@@ -271,7 +271,7 @@ def paper_config(p: Profile, scenes: int, spacing: float | None = None):
 def execute_stage():
     """The closed-loop evaluation's entry point (evaluate_navigation), or Unavailable where it is missing."""
     try:
-        from ragnav_jax.evaluation.episode import evaluate_navigation
+        from ragnav_jax.evaluation.navigate import evaluate_navigation
     except ImportError as e:
         raise Unavailable(f"closed-loop evaluation (ragnav eval, issue 8) is not in this tree ({e})") from e
     return evaluate_navigation
@@ -432,8 +432,9 @@ def bench_sweep(p: Profile, log: Callable[[str], None]) -> dict:
 # Closed loop: the host engine vs the device engine (eval.engine)
 
 # The closed loop proper of each engine, both called by evaluate_navigation as fn(loop, states, ...) after its
-# preamble (parsing, retrieval, verdict tables) and before the rows are made.
-LOOP_ENTRY_POINTS = (("ragnav_jax.evaluation.episode", "_run_chunk"),  # host engine, one batch of episodes
+# preamble (parsing, retrieval, verdict tables) and before the rows are made; it looks both up in these modules
+# when it calls them, so wrapping the module attributes catches every call.
+LOOP_ENTRY_POINTS = (("ragnav_jax.evaluation.host_loop", "_run_chunk"),  # host engine, one batch of episodes
                      ("ragnav_jax.evaluation.loop.program", "run_device"))  # device engine, all episodes
 
 
@@ -619,7 +620,7 @@ def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
         f"{m} {r['episodes_per_s_bound']:.2f} ep/s" for m, r in res["methods"].items() if r["episodes_per_s_bound"]))
     res["note"] = (
         "Each engine runs evaluate_navigation once on the distinct episodes (its rows give agreement and success); "
-        "the closed loop proper (episode._run_chunk batches, loop.program.run_device) is then run again on copies of "
+        "the closed loop proper (host_loop._run_chunk batches, loop.program.run_device) is then run again on copies of "
         "the states that call handed it, so the timed runs leave out the preamble (parsing, retrieval, verdict "
         "tables; preamble_s under evaluate_call), which is host work per episode and the same for both engines. "
         + (f"The device runs tile the {len(distinct)} distinct episodes' states to {n} (the same work repeated, "

@@ -6,8 +6,8 @@
 from ragnav_jax.exports import lazy_exports
 
 __getattr__, __dir__, __all__ = lazy_exports(__name__, {
-    "NAV_METHODS": "episode",
-    "evaluate_navigation": "episode",
+    "NAV_METHODS": "methods",
+    "evaluate_navigation": "navigate",
     "run_sweep": "sweep",
     "run_tune": "tune",
     "fit_verifier": "fitting",

@@ -73,8 +73,9 @@ def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quie
 
 
 def cmd_eval(args, cfg) -> int:
-    from ragnav_jax.evaluation.episode import NAV_METHODS, evaluate_navigation
     from ragnav_jax.evaluation.execute import make_executor
+    from ragnav_jax.evaluation.methods import NAV_METHODS
+    from ragnav_jax.evaluation.navigate import evaluate_navigation
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.encoder import bank_embedder
     from ragnav_jax.retrieval.commands import check_unparsed

@@ -25,7 +25,7 @@ from ragnav_jax.config import Config
 from ragnav_jax.sim import mjx  # imported without MJX's Warp notice
 from ragnav_jax.sim.controller import Path, follow, physics
 from ragnav_jax.sim.model import SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts
-from ragnav_jax.sim.sensors import camera_visibility
+from ragnav_jax.sim.sensors import look_around
 from ragnav_jax.world.scene import Scene
 
 PROGRESS_EPS = 0.002  # metres per control step below which a step counts as no progress
@@ -52,6 +52,27 @@ class LegResult:
     penetration: jax.Array  # (E,) float32 deepest contact penetration
 
 
+@struct.dataclass
+class Driving:
+    """Legs in progress (leading axis E): what `Executor.advance` carries from one call to the next, so a
+    caller can stop driving once some legs end, start new legs on those lanes and drive on."""
+
+    d: mjx.Data
+    paths: Path  # the legs' waypoints and the controller's progress along them
+    allowance: jax.Array  # (E,) int32 control steps the leg may take
+    steps: jax.Array  # (E,) int32 control steps driven on the leg
+    length: jax.Array  # (E,) float32 metres driven on the leg
+    stall: jax.Array  # (E,) int32 consecutive steps without progress
+    pen: jax.Array  # (E,) float32 deepest contact on the leg
+
+    @staticmethod
+    def start(d: mjx.Data, points: jax.Array, n: jax.Array, allowance: jax.Array) -> Driving:
+        """New legs from d: points (E, P, 2), n (E,) (0: no leg), allowance (E,)."""
+        E = n.shape[0]
+        zi, zf = jnp.zeros(E, jnp.int32), jnp.zeros(E, jnp.float32)
+        return Driving(d, jax.vmap(Path.of)(points, n), jnp.asarray(allowance, jnp.int32), zi, zf, zi, zf)
+
+
 @dataclasses.dataclass(frozen=True)
 class Executor:
     """Compiled-once leg runner and look-around for scenes that fit its template."""
@@ -67,7 +88,9 @@ class Executor:
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
     traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
     cache: dict  # host work that depends on these scenes alone (occupancy grids, local plans), shared by methods
-    drive: object  # run unjitted, for callers that trace it into a larger program (evaluation/loop)
+    advance: object  # unjitted (scene_idx (E,), Driving, keep ()) -> (Driving, arrived (E,), driving (E,)): drives
+    # until at most `keep` legs are still going (0: every leg ends), for callers that trace it into a larger
+    # program (evaluation/loop)
     look_fn: object  # look unjitted, likewise
 
 
@@ -116,38 +139,43 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         last = path.points[jnp.maximum(path.n - 1, 0)]
         return (path.n == 0) | (jnp.linalg.norm(d.qpos[:2] - last) < tol)
 
-    def drive(scene_idx, d, points, n, allowance, record: bool):
-        """The legs' while_loop; with `record`, also every episode's pose after each of its control steps
-        (row t of an episode's (leg_max_steps, 3) buffer for its step t + 1, valid for t < steps)."""
+    def status(c: Driving):
+        """((E,) arrived, (E,) still driving)."""
+        arrived = jax.vmap(arrived_of)(c.d, c.paths)
+        return arrived, ~arrived & (c.steps < c.allowance) & (c.stall < stall_max)
+
+    def advance(scene_idx, c: Driving, keep, record: bool = False):
+        """Drives the legs of c until at most `keep` are still going: one while_loop over control steps whose
+        body is the per-episode step vmapped over episodes (legs that ended stay as they are). With `record`,
+        also every episode's pose after each of its control steps (row t of an episode's (leg_max_steps, 3)
+        buffer for its step t + 1 of this call, valid for t < steps)."""
         key = "run_traced" if record else "run"
         traces[key] = traces.get(key, 0) + 1
         m, in_axes = models(scene_idx)
         E = scene_idx.shape[0]
-        paths = jax.vmap(Path.of)(points, n)
-        zeros_i = jnp.zeros(E, jnp.int32)
         buf = jnp.zeros((E, ev.leg_max_steps if record else 0, 3), jnp.float32)
 
-        def status(c):
-            d, paths, steps, length, stall, pen = c
-            arrived = jax.vmap(arrived_of)(d, paths)
-            return arrived, ~arrived & (steps < allowance) & (stall < stall_max)
+        def cond(x):
+            return jnp.sum(status(x[1])[1]) > keep
 
-        def cond(c):
-            return jnp.any(status(c[1:7])[1])
-
-        def body(c):
-            t, d, paths, steps, length, stall, pen, buf = c
-            active = status((d, paths, steps, length, stall, pen))[1]
-            out = jax.vmap(one_step, in_axes=(in_axes, 0, 0, 0, 0, 0, 0, 0))(m, d, paths, active, steps, length, stall, pen)
+        def body(x):
+            t, c, buf = x
+            active = status(c)[1]
+            out = jax.vmap(one_step, in_axes=(in_axes, 0, 0, 0, 0, 0, 0, 0))(
+                m, c.d, c.paths, active, c.steps, c.length, c.stall, c.pen)
             if record:  # an episode is active for its first `steps` iterations, so row t is its step t + 1
                 buf = jax.lax.dynamic_update_slice_in_dim(buf, out[0].qpos[:, None, :3], t, axis=1)
-            return (t + 1, *out, buf)
+            d, paths, steps, length, stall, pen = out
+            return t + 1, c.replace(d=d, paths=paths, steps=steps, length=length, stall=stall, pen=pen), buf
 
-        c = (jnp.int32(0), d, paths, zeros_i, jnp.zeros(E, jnp.float32), zeros_i, jnp.zeros(E, jnp.float32), buf)
-        c = jax.lax.while_loop(cond, body, c)
-        _, d, paths, steps, length, stall, pen, buf = c
-        arrived = jax.vmap(arrived_of)(d, paths)
-        res = LegResult(d, arrived, steps, length, pen)
+        _, c, buf = jax.lax.while_loop(cond, body, (jnp.int32(0), c, buf))
+        arrived, going = status(c)
+        return c, arrived, going, buf
+
+    def drive(scene_idx, d, points, n, allowance, record: bool):
+        """Every leg to its end (arrived, stalled or out of allowance); with `record`, the poses (`advance`)."""
+        c, arrived, _, buf = advance(scene_idx, Driving.start(d, points, n, allowance), 0, record)
+        res = LegResult(c.d, arrived, c.steps, c.length, c.pen)
         return (res, buf) if record else res
 
     run = jax.jit(functools.partial(drive, record=False))
@@ -158,12 +186,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         m, in_axes = models(scene_idx)
 
         def one(m, d, op, osz, om):
-            def at(h):
-                dd = d.replace(qpos=d.qpos.at[2].set(h))
-                return camera_visibility(m, dd, op, osz, om, obj_geom, sim, rb)
-
-            v = jax.vmap(at)(headings)
-            return jnp.any(v.visible, 0), v.distance[0]
+            return look_around(m, d, op, osz, om, obj_geom, sim, rb, headings)
 
         return jax.vmap(one, in_axes=(in_axes, 0, 0, 0, 0))(
             m, d, tables.obj_pos[scene_idx], tables.obj_size[scene_idx], tables.obj_mask[scene_idx])
@@ -177,7 +200,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, run_traced, look, init, traces, {}, functools.partial(drive, record=False), look_fn)
+                    run, run_traced, look, init, traces, {}, lambda i, c, keep: advance(i, c, keep)[:3], look_fn)
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:

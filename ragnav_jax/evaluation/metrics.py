@@ -51,7 +51,7 @@ def _route(loop, b: int, start: int, nodes: list[int]) -> tuple[float, float]:
 
 
 def _oracle_length(loop, st, oracle_nodes: list) -> float:
-    from ragnav_jax.evaluation.episode import plan_order
+    from ragnav_jax.evaluation.host_loop import plan_order
 
     b = st.b
     start = loop.nearest(b, loop.scenes[st.ep.scene].start.position[:2])

@@ -95,8 +95,8 @@ def replay_episode(ev: EvalRun, episode_id: str, executor=None) -> dict:
     """The episode's row evaluated again with the recorder on: "legs" with every control step's pose and
     what the camera saw, and "trace" (candidates with scores, rejections). `executor`: one built for the
     scenes of ev.episodes (make_executor), to reuse across replays."""
-    from ragnav_jax.evaluation.episode import evaluate_navigation
     from ragnav_jax.evaluation.execute import make_executor
+    from ragnav_jax.evaluation.navigate import evaluate_navigation
     from ragnav_jax.memory.encoder import make_embedder
 
     if episode_id not in ev.rows:

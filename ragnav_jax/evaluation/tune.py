@@ -31,14 +31,16 @@ import jax.numpy as jnp
 import numpy as np
 import optax
 
+from ragnav_jax.config import RetrievalConfig, hyperparameters
 from ragnav_jax.io import save_figure
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.retrieval.evaluate import RetrievalBatch, correct_counts, node_scores
 from ragnav_jax.retrieval.kernels import NEG
 from ragnav_jax.retrieval.params import RetrievalParams
 
-POSITIVE = ("sigma", "sigma_loc", "w_loc", "w_sensor", "eta")  # optimised as log(x)
-UNIT = ("w_slot",)  # optimised as logit(x)
+# How each tunable field moves (config.RetrievalConfig's table, `tune=`); the rest of TUNABLE move raw.
+POSITIVE = tuple(name for name, h in hyperparameters(RetrievalConfig).items() if h.tune == "log")  # as log(x)
+UNIT = tuple(name for name, h in hyperparameters(RetrievalConfig).items() if h.tune == "logit")  # as logit(x)
 EPS = 1e-4  # keeps log/logit finite for parameters that start at their bounds (eta = 0, w_slot = 1)
 
 

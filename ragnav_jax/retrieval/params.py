@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-import dataclasses
-
 import jax.numpy as jnp
 from flax import struct
 
-from ragnav_jax.config import RetrievalConfig
+from ragnav_jax.config import RetrievalConfig, hyperparameters
 
 
 @struct.dataclass
@@ -51,12 +49,12 @@ class RetrievalParams:
         )
 
 
-INT_FIELDS = ("top_k", "hops", "boost_hops", "beam")
-# The hyperparameters' defaults are written once, in the config section (config.RetrievalConfig); the
-# ablation flags are on unless an ablation turns one off.
+# The hyperparameters (default, range, type) are written once, in the config section's table
+# (config.RetrievalConfig); the ablation flags are on unless an ablation turns one off.
+_TABLE = hyperparameters(RetrievalConfig)
+INT_FIELDS = tuple(name for name, h in _TABLE.items() if h.type is int)
 FLAGS = ("use_forest", "use_topology", "use_spatial", "use_boost")
-DEFAULTS = {**{f.name: f.default for f in dataclasses.fields(RetrievalConfig) if f.name != "method"},
-            **dict.fromkeys(FLAGS, 1.0)}
+DEFAULTS = {**{name: h.default for name, h in _TABLE.items()}, **dict.fromkeys(FLAGS, 1.0)}
 # Static array-size limits of the compiled kernels (a param above its limit is clipped by the kernel).
 MAX_K = 16
 MAX_HOPS = 3

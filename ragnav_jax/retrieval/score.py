@@ -175,7 +175,7 @@ def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, gate_
     boost (mean relevant-neighbour score), forest (kept by the beam), relaxed (the node's score with
     no anchor validation, boosting or forest lock, K.NEG where it has no observation), category (its best
     instance's head noun matches the target's: head similarity >= match_threshold). Evaluation orders
-    the reflection's candidates by these (evaluation/episode.py: candidate_order).
+    the reflection's candidates by these (evaluation/ranking.py: candidate_order).
     """
     inst, t = instance_scores(idx, q, p)
     best = jnp.argmax(inst, axis=1)  # (N,)

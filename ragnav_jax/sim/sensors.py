@@ -69,11 +69,38 @@ def camera_visibility(
     the side facing the camera.
     """
     x, y, yaw = pose_of(d)
-    cam = jnp.stack([x, y, jnp.asarray(sim.camera_height, jnp.float32)])
-    rel = obj_pos[:, :2] - cam[None, :2]
+    in_view, distance, bearing = _in_view(x, y, yaw, obj_pos, obj_mask, sim)
+    los = _line_of_sight(m, d, obj_pos, obj_size, obj_geom, sim, robot_body)
+    return Visibility(in_view & los, distance, bearing)
+
+
+def look_around(
+    m: mjx.Model, d: mjx.Data, obj_pos: jax.Array, obj_size: jax.Array, obj_mask: jax.Array, obj_geom: jax.Array,
+    sim: SimConfig, robot_body: int, headings: jax.Array,
+) -> tuple[jax.Array, jax.Array]:
+    """`camera_visibility` at each of `headings` (H,) yaws from the robot's position in d, a turn in place:
+    ((O,) bool seen at some heading, (O,) float32 distance). The camera's position does not turn with it, so
+    each line of sight is cast once for all headings."""
+    x, y, _ = pose_of(d)
+    in_view, distance, _ = jax.vmap(lambda h: _in_view(x, y, h, obj_pos, obj_mask, sim))(headings)
+    los = _line_of_sight(m, d, obj_pos, obj_size, obj_geom, sim, robot_body)
+    return jnp.any(in_view, 0) & los, distance[0]
+
+
+def _in_view(x, y, yaw, obj_pos: jax.Array, obj_mask: jax.Array, sim: SimConfig):
+    """((O,) in the field of view and range, (O,) planar distance, (O,) bearing) of the camera at x, y, yaw."""
+    rel = obj_pos[:, :2] - jnp.stack([x, y])[None]
     distance = jnp.linalg.norm(rel, axis=-1)
     bearing = wrap_angle(jnp.arctan2(rel[:, 1], rel[:, 0]) - yaw)
     in_view = obj_mask & (distance <= sim.camera_range) & (jnp.abs(bearing) <= math.radians(sim.camera_fov_deg) / 2)
+    return in_view, distance.astype(jnp.float32), bearing
+
+
+def _line_of_sight(m: mjx.Model, d: mjx.Data, obj_pos: jax.Array, obj_size: jax.Array, obj_geom: jax.Array,
+                   sim: SimConfig, robot_body: int) -> jax.Array:
+    """(O,) bool: a ray from the camera to one of an object's four target points first meets the object."""
+    x, y, _ = pose_of(d)
+    cam = jnp.stack([x, y, jnp.asarray(sim.camera_height, jnp.float32)])
     # Three points on the top face: its middle and two points along its longer side.
     top = obj_pos.at[:, 2].add(obj_size[:, 2] / 2 - jnp.minimum(0.01, obj_size[:, 2] / 4))
     along = jnp.where((obj_size[:, 0] >= obj_size[:, 1])[:, None], jnp.array([1.0, 0.0, 0.0]), jnp.array([0.0, 1.0, 0.0]))
@@ -93,8 +120,7 @@ def camera_visibility(
         dist, gid = mjx_ray(m, d, cam, v / jnp.maximum(n, 1e-6), bodyexclude=robot_body)
         return (gid == geom) | (dist < 0) | (dist >= n - 1e-3)
 
-    los = jax.vmap(jax.vmap(clear, in_axes=(0, None)))(targets, obj_geom).any(-1)
-    return Visibility(in_view & los, distance.astype(jnp.float32), bearing)
+    return jax.vmap(jax.vmap(clear, in_axes=(0, None)))(targets, obj_geom).any(-1)
 
 
 def odometry(pose: jax.Array, z: float, key: jax.Array, noise: tuple[float, float]) -> jax.Array:

@@ -1,6 +1,6 @@
 """RAGNav's candidate list of one subgoal slot from the retrieval kernel's terms, on the device.
 
-The jittable form of `episode._kernel_ranked`'s per-slot body (`candidate_order`, `distinct_instances`, the
+The jittable form of `ranking._kernel_ranked`'s per-slot body (`candidate_order`, `distinct_instances`, the
 pre-check, `view_nodes`), node for node: every Python loop there is a sort with explicit tie keys here.
 
     r = jax.jit(rank_all, static_argnames=("k", "depth", "widen", "closest_view"))(
@@ -59,7 +59,7 @@ def _order(score, relaxed, category, live, widen: bool):
 def rank_candidates(score: jax.Array, relaxed: jax.Array, category: jax.Array, slot_best: jax.Array,
                     node_live: jax.Array, slot_inst: jax.Array, inst_pos: jax.Array, node_pos: jax.Array,
                     ruled: jax.Array, k: int, depth: int, widen: bool, closest_view: bool) -> Ranked:
-    """One subgoal slot's candidates, as `episode._kernel_ranked` lists them.
+    """One subgoal slot's candidates, as `ranking._kernel_ranked` lists them.
 
     score, relaxed: (N,) float32 final and relaxed retrieval scores (K.NEG: dropped); category: (N,) bool;
     slot_best: (N,) int32 each node's best-matching observation slot; node_live: (N,) bool;

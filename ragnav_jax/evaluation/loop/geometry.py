@@ -2,7 +2,7 @@
 planner's reachability test, approach stops and driven routes (jax.numpy, jit- and vmap-safe, static shapes).
 
 Each kernel is for one episode (vmap from outside) and is the device twin of host code it must agree with:
-`memory.paths.reconstruct_path`, `execute.densify` / `pad_points` and the `episode.Loop` methods named in each
+`memory.paths.reconstruct_path`, `execute.densify` / `pad_points` and the `host_loop.Loop` methods named in each
 docstring. The host builders `scene_grid`, `stack_grids` and `edge_plans` precompute what depends on a scene
 alone (the occupancy grid, its connected regions, every map edge's local plan), once, outside any trace.
 """
@@ -17,7 +17,7 @@ import jax.numpy as jnp
 import numpy as np
 from jax import lax
 
-from ragnav_jax.evaluation.episode import ESCAPE_M, GRID_M, TIGHT_GAP_M
+from ragnav_jax.evaluation.clearance import ESCAPE_M, GRID_M, TIGHT_GAP_M
 from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 
 ATTACH_NEAREST = 8  # key poses `attach` tries, nearest first (Loop.attach)
@@ -238,7 +238,7 @@ def way_exists(origin, clear, labels, a, c, tight, res: float = GRID_M, escape: 
 
 
 def approach_ring_jnp(c: jax.Array, half: jax.Array, gap, per_side: int = 5) -> jax.Array:
-    """(4 * per_side + 12, 2) stops at distance `gap` from a box footprint (`episode.approach_ring`, same order):
+    """(4 * per_side + 12, 2) stops at distance `gap` from a box footprint (`clearance.approach_ring`, same order):
     along each side's outward normal, then three directions round each corner. c, half (2,)."""
     t = jnp.asarray(np.linspace(-1.0, 1.0, per_side + 2)[1:-1], jnp.float32)
     out = []
@@ -361,19 +361,23 @@ def drive_route(nodes: jax.Array, n, pos: jax.Array, idx: jax.Array, plans: jax.
 _STEPS = np.asarray([(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)], np.int32)  # (8, 2)
 
 
-def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bool, window: int = 128,
-                max_points: int = 16, res: float = GRID_M, escape: float = ESCAPE_M) -> tuple[jax.Array, jax.Array]:
+LOCAL_WINDOW = 128  # cells (6.4 m) of the block a segment's grid route is searched in
+
+
+def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bool, window: int = LOCAL_WINDOW,
+                max_points: int = 16, res: float = GRID_M, escape: float = ESCAPE_M, go=True) -> tuple[jax.Array, jax.Array]:
     """Waypoints a ... c round what is in the way (`Loop._local`): the straight segment where it clears `need`.
 
     a, c (2,); obs: obstacle arrays (padded); origin (2,), clear (H, W): the scene's grid padded as `stack_grids`
     (blocked beyond its own shape (2,) int32 (H, W)); need, tight: the tiers' clearances (robot radius +
-    GRID_MARGIN_M, + TIGHT_GAP_M); window (a multiple of 32), max_points, res, escape static.
+    GRID_MARGIN_M, + TIGHT_GAP_M); window (a multiple of 32), max_points, res, escape static; go: bool, False
+    gives the straight segment without searching (under vmap, lanes that need no route add no iterations).
 
     Where the segment passes closer than `need` to an obstacle (and |c - a| >= 1e-3), a breadth-first search
     from c's cell over the 8-connected cells of a window x window block centred on the segment, in the host's
     tiers: cells that clear `need`, then `tight`, in the ends' cells' bounding box grown by GRID_WINDOW_M; with
-    `anywhere` (static) then the same over the whole block (where the host searches the whole house: routes
-    that leave the block are not found). Within `escape` of either end a cell as clear as that end (or the
+    `anywhere` (static) then the same over the whole block (the host's whole house where the block covers the
+    grid, as `step._local` makes it for approaches; else routes that leave the block are not found). Within `escape` of either end a cell as clear as that end (or the
     tier) passes too, and the end cells always. One layer per `lax.while_loop` iteration (none where the
     segment is clear), until a's cell is reached or the tier's region is exhausted. Then a walk from a's cell to a neighbour one layer
     nearer c (fixed order) and string pulling: from each kept point the farthest later cell (at most `window`
@@ -384,7 +388,7 @@ def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bo
     Returns points (max_points, 2) float32, a first and c last (the first max_points - 1 and c where the
     host would keep more), padded with c, and their count n (int32; 2 for the straight segment).
     """
-    from ragnav_jax.evaluation.episode import GRID_WINDOW_M
+    from ragnav_jax.evaluation.clearance import GRID_WINDOW_M
 
     if window % 32:
         raise ValueError(f"window must be a multiple of 32 (got {window})")
@@ -421,7 +425,7 @@ def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bo
     whole = (gi < hw[0])[:, None] & (gj < hw[1])[None, :]
     tiers = [(need, box), (tight, box)] + ([(need, whole), (tight, whole)] if anywhere else [])
     oks = _pack(jnp.stack([passable(t, m) for t, m in tiers]))  # (T, w, w / 32)
-    tier, steps, layers = _search(oks, la, lc, ~straight & ends_in)
+    tier, steps, layers = _search(oks, la, lc, ~straight & ends_in & go)
     cap = 4 * w
     found = (tier < len(tiers)) & (steps > 0) & (steps < cap)
     cells = _descend(layers, la, steps, cap, found)  # (cap, 2) a's cell ... c's cell, padded with c's

@@ -1,20 +1,19 @@
 """The closed loop as one device program: every episode of a batch, every leg, one jitted `lax.while_loop`.
 
-    states = run_device(loop, states, cfg)   # evaluation/episode.py hands over its host EpisodeStates
+    run_device(loop, states, cfg)   # evaluation/navigate.py hands over its host EpisodeStates
 
 Host Python runs before the loop (the padded `World` and `Inputs` from what `evaluate_navigation` computed:
 candidates, verdict and search tables, the memory's paths, occupancy grids and local plans of map edges)
 and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
-makes the rows). In between, each iteration of the while_loop is one leg for every episode:
-budget -> `step.next_leg` (vmapped) -> waypoints -> MJX drive (`Executor.drive`: a while_loop over control
-steps) -> look-around (MJX camera visibility) -> `step.after_leg` (vmapped). Methods are `Flags` (static),
-the order penalty lambda an array, so a sweep over it reuses one compilation.
+makes the rows). In between, each iteration of the while_loop reflects on the episodes whose leg ended
+(look-around with MJX camera visibility -> `step.after_leg` -> budget -> `step.next_leg` -> waypoints, all
+vmapped and masked) and then drives (`Executor.advance`, a while_loop over MJX control steps) until a share
+`eval.refill` of the legs going have ended, so short legs do not wait for the batch's longest. The method is
+data (`Inputs`), the settings static `Flags`, the order penalty lambda an array: a sweep over it, and every
+method, reuse one compilation.
 
-What differs from the host loop (README, "The device loop"): an approach whose straight line is blocked
-goes over the map (key pose nearest the robot -> key pose nearest the stop -> stop) where the host's
-grid planner finds a way round; segments that end off the map (the first and last of an approach or a
-look-closer leg) are driven straight where the host plans them on its grid. The ETPNav-style baseline
-(exploration replay) runs on the host loop only.
+What differs from the host loop is in the README ("The device loop"). The ETPNav-style baseline
+(exploration replay), traces and record_legs run on the host loop only.
 """
 
 from __future__ import annotations
@@ -26,6 +25,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ragnav_jax.config import Config
+from ragnav_jax.evaluation.execute import Driving
 from ragnav_jax.evaluation.loop import geometry as geo
 from ragnav_jax.evaluation.loop import step
 from ragnav_jax.evaluation.loop.state import (
@@ -45,7 +45,7 @@ PLAN_POINTS = 24  # waypoints a map edge's local plan may have
 
 
 def flags_of(cfg: Config, look_cost: int) -> Flags:
-    from ragnav_jax.evaluation.episode import GRID_MARGIN_M, TIGHT_GAP_M
+    from ragnav_jax.evaluation.clearance import GRID_MARGIN_M, TIGHT_GAP_M
 
     ev, sim = cfg.eval, cfg.sim
     return Flags(retries=ev.retries, max_steps=ev.max_steps, leg_max_steps=ev.leg_max_steps, look_cost=look_cost,
@@ -59,7 +59,7 @@ def flags_of(cfg: Config, look_cost: int) -> Flags:
 
 
 def world_of(loop) -> World:
-    """The `World` of a host `episode.Loop` (its bank's scenes; cached on the executor)."""
+    """The `World` of a host `host_loop.Loop` (its bank's scenes; cached on the executor)."""
     key = ("device_world", tuple(loop.bank.names), loop._need())  # the executor's scenes are fixed
     if key in loop.ex.cache:
         return loop.ex.cache[key]
@@ -102,7 +102,7 @@ def world_of(loop) -> World:
 
 def inputs_of(loop, states, G: int, C: int, S: int, T: int) -> Inputs:
     """The padded `Inputs` of host EpisodeStates (as evaluate_navigation made them, before any leg)."""
-    from ragnav_jax.evaluation.episode import REVISIT
+    from ragnav_jax.evaluation.host_loop import REVISIT
 
     E, O = len(states), loop.ex.model.layout.objects
     z = lambda shape, v, t: np.full(shape, v, t)  # noqa: E731
@@ -170,40 +170,59 @@ def _select(mask, a, b):
     return jax.tree.map(lambda x, y: jnp.where(mask.reshape(mask.shape + (1,) * (x.ndim - 1)), x, y), a, b)
 
 
-def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, *, fl: Flags, init, drive, look) -> State:
+def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, *, fl: Flags, init, advance,
+                look) -> State:
     """Runs every episode of the batch to its end. scene_idx (E,) executor scene of each episode; start_pose
-    (E, 3); lam (E,) order penalty of each (a sweep's grid points are episodes too). Returns the final State."""
+    (E, 3); lam (E,) order penalty of each (a sweep's grid points are episodes too); refill () eval.refill.
+    Returns the final State.
+
+    Each iteration reflects on every lane whose leg ended (look-around, `step.after_leg`, the budget,
+    `step.next_leg`, waypoints) and starts its next leg, then drives (`advance`) until a share `refill` of
+    the legs going has ended: lanes do not wait for the batch's longest leg (1.0: every leg ends first). Each
+    episode's own sequence of legs and steps is the same whatever the share."""
     N, O = world.pos.shape[1], world.known.shape[1]
+    E = inp.b.shape[0]
     st = initial_state(inp, lam, world, fl, N, O)
     d = init(scene_idx, start_pose)
+    P = fl.path_points
+    drv = Driving.start(d, jnp.zeros((E, P, 2), jnp.float32), jnp.zeros(E, jnp.int32), jnp.zeros(E, jnp.int32))
     in_ep = (0, 0, None, 0, 0)
+
+    def reflect(st, drv, arrived, going, pending):
+        """Lanes not driving: the end of their leg (`pending`), then their next leg. Returns (st, drv, pending)."""
+        pose = drv.d.qpos[:, :3]
+        visible, _ = look(scene_idx, drv.d)
+        ended = pending & ~going
+        st = _select(ended, st.replace(steps=st.steps + drv.steps, length=st.length + drv.length,
+                                       penetration=jnp.maximum(st.penetration, drv.pen), legs=st.legs + 1), st)
+        after = jax.vmap(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
+                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, inp, world, pose, arrived, visible, lam)
+        st = _select(ended, after, st)
+        free = ~going & ~st.done
+        over = free & (st.steps + st.look_steps >= fl.max_steps)
+        left = jax.vmap(step._left_mask)(st)
+        st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
+                        status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
+                        leg_kind=jnp.where(over, NONE, st.leg_kind))
+        nxt = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, inp, world, pose, lam)
+        st = _select(free, nxt, st)
+        start = free & ~st.done & (st.leg_kind != NONE)
+        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, inp, world, pose)
+        allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
+        new = Driving.start(drv.d, pts, jnp.where(start, n, 0), jnp.where(start, allow, 0).astype(jnp.int32))
+        return st, _select(start, new, drv), start | (pending & going)
 
     def cond(c):
         return jnp.any(~c[0].done)
 
     def body(c):
-        st, d, pose = c
-        over = ~st.done & (st.steps + st.look_steps >= fl.max_steps)
-        left = jax.vmap(step._left_mask)(st)
-        st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
-                        status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
-                        leg_kind=jnp.where(over, NONE, st.leg_kind))
-        st = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, inp, world, pose, lam)
-        active = ~st.done & (st.leg_kind != NONE)
-        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, inp, world, pose)
-        allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
-        res = drive(scene_idx, d, pts, jnp.where(active, n, 0), jnp.where(active, allow, 0).astype(jnp.int32))
-        visible, _ = look(scene_idx, res.d)
-        pose = res.d.qpos[:, :3]
-        st = st.replace(steps=st.steps + jnp.where(active, res.steps, 0),
-                        length=st.length + jnp.where(active, res.length, 0.0),
-                        penetration=jnp.maximum(st.penetration, jnp.where(active, res.penetration, 0.0)),
-                        legs=st.legs + active.astype(jnp.int32))
-        after = jax.vmap(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
-                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, inp, world, pose, res.arrived, visible, lam)
-        return _select(active, after, st), res.d, pose
+        st, drv, arrived, going, pending = c
+        st, drv, pending = reflect(st, drv, arrived, going, pending)
+        keep = jnp.floor((1.0 - refill) * jnp.sum(pending)).astype(jnp.int32)
+        drv, arrived, going = advance(scene_idx, drv, keep)
+        return st, drv, arrived, going, pending
 
-    st, _, _ = jax.lax.while_loop(cond, body, (st, d, start_pose))
+    st, *_ = jax.lax.while_loop(cond, body, (st, drv, jnp.ones(E, bool), jnp.zeros(E, bool), jnp.zeros(E, bool)))
     return st
 
 
@@ -211,7 +230,8 @@ def compiled(ex, fl: Flags):
     """The jitted program of an executor and flags (one trace per padded batch shape), kept on the executor."""
     key = ("device_program", fl)
     if key not in ex.cache:
-        ex.cache[key] = jax.jit(functools.partial(closed_loop, fl=fl, init=ex.init, drive=ex.drive, look=ex.look_fn))
+        ex.cache[key] = jax.jit(functools.partial(closed_loop, fl=fl, init=ex.init, advance=ex.advance,
+                                                  look=ex.look_fn))
     return ex.cache[key]
 
 
@@ -245,32 +265,32 @@ def run_device(loop, states: list, cfg: Config, progress=None) -> None:
         start = _pad(jnp.asarray([[*loop.scenes[st.ep.scene].start.position[:2], loop.scenes[st.ep.scene].start.yaw]
                                   for st in chunk], jnp.float32), B)
         lam = jnp.full(B, cfg.planning.lam, jnp.float32)
-        out = jax.device_get(prog(world, inp, sidx, start, lam))
-        for i, st in enumerate(chunk):
-            write_back(st, jax.tree.map(lambda x, i=i: x[i], out), loop)
+        write_back(chunk, prog(world, inp, sidx, start, lam, jnp.float32(cfg.eval.refill)), loop)
         if progress is not None:
             progress(len(chunk))
 
 
-def write_back(st, s: State, loop) -> None:
-    """Copies one episode's final device State into its host EpisodeState."""
-    G = len(st.status)
-    objs = loop.scenes[st.ep.scene].objects
-    st.status = [STATUS_NAMES[int(x)] for x in s.status[:G]]
-    st.found = [bool(x) for x in s.found[: len(st.ep.goals)]]
-    st.rejected = [int(x) for x in s.rejected[:G]]
-    st.cptr = [int(x) for x in s.cptr[:G]]
-    st.steps, st.look_steps = int(s.steps), int(s.look_steps)
-    st.length, st.penetration = float(s.length), float(s.penetration)
-    st.planned = [int(x) for x in s.planned[: int(s.n_planned)]]
-    st.remaining = [int(x) for x in s.order[: int(s.n_left)]]
-    st.node, st.done, st.reason = int(s.node), bool(s.done), REASON_NAMES[int(s.reason)]
-    st.declarations = []
-    for k in range(int(s.n_decl)):
-        j = int(s.decl_truth[k])
-        st.declarations.append({"goal": int(s.decl_goal[k]), "truth": j if j >= 0 else None,
-                                "object": objs[int(s.decl_obj[k])].id, "correct": j >= 0,
-                                "step": int(s.decl_step[k]), "xy": [round(float(x), 3) for x in s.decl_xy[k]],
-                                **({"fallback": True} if s.decl_fallback[k] else {})})
-    st.fell_back = {g for g in range(G) if s.fell_back[g]}
-
+def write_back(states: list, out: State, loop) -> None:
+    """Copies the final device State of a batch (its first len(states) rows) into the host EpisodeStates: one
+    device-to-host copy and one list conversion per field, then plain Python per episode."""
+    E = len(states)
+    s = {k: v[:E].tolist() for k, v in vars(jax.device_get(out)).items()}
+    for i, st in enumerate(states):
+        G, T = len(st.status), len(st.ep.goals)
+        objs = loop.scenes[st.ep.scene].objects
+        st.status = [STATUS_NAMES[x] for x in s["status"][i][:G]]
+        st.found = s["found"][i][:T]
+        st.rejected, st.cptr = s["rejected"][i][:G], s["cptr"][i][:G]
+        st.steps, st.look_steps = s["steps"][i], s["look_steps"][i]
+        st.length, st.penetration = s["length"][i], s["penetration"][i]
+        st.planned = s["planned"][i][: s["n_planned"][i]]
+        st.remaining = s["order"][i][: s["n_left"][i]]
+        st.node, st.done, st.reason = s["node"][i], s["done"][i], REASON_NAMES[s["reason"][i]]
+        st.declarations = []
+        for k in range(s["n_decl"][i]):
+            j = s["decl_truth"][i][k]
+            st.declarations.append({"goal": s["decl_goal"][i][k], "truth": j if j >= 0 else None,
+                                    "object": objs[s["decl_obj"][i][k]].id, "correct": j >= 0,
+                                    "step": s["decl_step"][i][k], "xy": [round(x, 3) for x in s["decl_xy"][i][k]],
+                                    **({"fallback": True} if s["decl_fallback"][i][k] else {})})
+        st.fell_back = {g for g in range(G) if s["fell_back"][i][g]}

@@ -16,7 +16,7 @@ from flax import struct
 NONE, NAV, SEARCH, CLOSER, APPROACH = 0, 1, 2, 3, 4
 LEG_NAMES = ("none", "nav", "search", "closer", "approach")
 
-# Goal status codes; the host rows spell them as evaluation/episode.py does.
+# Goal status codes; the host rows spell them as evaluation/host_loop.py does.
 PENDING, FOUND, WRONG = 0, 1, 2
 FAILURES = ("parse", "searched", "no_candidate", "not_confirmed", "stuck", "blocked", "unreachable", "budget")
 FAILED = {why: 3 + k for k, why in enumerate(FAILURES)}
@@ -82,7 +82,7 @@ class Inputs:
     search: jax.Array  # (E, G, S) int32 key poses to search
     revisit: jax.Array  # (E, G) bool the goal may go back to an object declared for another
     truth: jax.Array  # (E, T) int32 object index of each true goal (-1: absent from the scene)
-    # the method, per episode (`episode.MethodSpec` and eval settings): one compiled program runs every method
+    # the method, per episode (`methods.MethodSpec` and eval settings): one compiled program runs every method
     straight: jax.Array  # (E,) bool straight-line legs, Euclidean order costs (no topological map)
     optimal_order: jax.Array  # (E,) bool solve the visiting order (False: instruction order)
     searches: jax.Array  # (E,) bool search key poses when the candidates run out

@@ -1,7 +1,7 @@
 """One episode's reflection and planning on the device: `next_leg` before a leg, `after_leg` after it.
 
 Both are kernels for one episode (vmap from outside, `program.py`); every transition of the host loop
-(`evaluation/episode.py: Loop`) is an array operation here: the visiting order is re-solved with
+(`evaluation/host_loop.py: Loop`) is an array operation here: the visiting order is re-solved with
 `planning/order.py`'s solvers, paths come from the memory's predecessor matrix, a goal's candidates,
 rejections, skipped objects and fallback live in padded arrays. In this module `st`, `inp` are one
 episode's `State` / `Inputs` (leading axis removed) and `w` the whole `World` (indexed by the episode's
@@ -13,7 +13,7 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
-from ragnav_jax.evaluation.episode import CLOSER_GAP_M, SAME_INSTANCE_M
+from ragnav_jax.evaluation.clearance import CLOSER_GAP_M, SAME_INSTANCE_M
 from ragnav_jax.evaluation.loop import geometry as geo
 from ragnav_jax.evaluation.loop.state import APPROACH, CLOSER, FAILED, FOUND, NAV, NONE, SEARCH, WRONG, Flags
 from ragnav_jax.memory.topomap import segment_clearance
@@ -85,7 +85,7 @@ def search_next(st, inp, w, g, fl: Flags):
 
 def replan(st, inp, w, lam, fl: Flags):
     """Re-solves the order of the remaining goals from the robot's node with their current candidates
-    (`episode.Loop.replan`): the order planner over the goals that have one (strict instructions with the
+    (`host_loop.Loop.replan`): the order planner over the goals that have one (strict instructions with the
     order penalty `lam`), then each goal without one at its instruction place (free: at the end)."""
     G = st.order.shape[0]
     ids = jnp.arange(G, dtype=jnp.int32)
@@ -112,7 +112,7 @@ def replan(st, inp, w, lam, fl: Flags):
     pos = jnp.full(P, 3 * P, jnp.int32).at[jnp.where((k >= 0) & (k < n_live), k, P)].set(
         jnp.arange(P, dtype=jnp.int32), mode="drop")
     key = jnp.where(slot < n_live, jnp.where(pos < 3 * P, pos, P + slot), 3 * P + slot)
-    key = jnp.where(n_live <= 1, slot, key)  # one goal: nothing to solve (episode.plan_order)
+    key = jnp.where(n_live <= 1, slot, key)  # one goal: nothing to solve (host_loop.plan_order)
     seq = goal_of[jnp.argsort(key)][:G]
     seq = jnp.where(ids < n_live, seq, 0)
 
@@ -147,7 +147,7 @@ def _replanned(before, st, inp, w, lam, fl: Flags):
 
 
 def approach_stop(st, inp, w, o, pose, fl: Flags):
-    """(2,) where to stop by object o (`episode.Loop.approach_points`)."""
+    """(2,) where to stop by object o (`host_loop.Loop.approach_points`)."""
     b = inp.b
     return geo.approach_stop(w.obj_center[b, o], w.obj_half[b, o], pose[:2], fl.approach_gap + fl.robot_radius,
                              fl.need, _obs(w, b), w.grid_origin[b], w.grid_clear[b], w.grid_labels[b], fl.tight,
@@ -155,7 +155,7 @@ def approach_stop(st, inp, w, o, pose, fl: Flags):
 
 
 def next_leg(st, inp, w, pose, lam, fl: Flags):
-    """Decides the episode's next leg (`episode.Loop.next_leg`): sets leg_kind / leg_goal / leg_target, or
+    """Decides the episode's next leg (`host_loop.Loop.next_leg`): sets leg_kind / leg_goal / leg_target, or
     done. Goals that cannot be tried are given up on the way, as on the host."""
 
     def cond(c):
@@ -233,26 +233,36 @@ def _splice(pts, n, is_node, nodes, ends, w, b):
     return geo.join_plans(pts, n, plans, cnt, (which >= 0) | (pid >= 0))
 
 
-def _local(w, b, a, c, fl: Flags, anywhere: bool):
-    """`geometry.local_route` on the episode's scene: ((ROUTE_POINTS, 2) points, count)."""
-    return geo.local_route(a, c, _obs(w, b), w.grid_origin[b], w.grid_clear[b], w.grid_shape[b], fl.need, fl.tight,
-                           anywhere, max_points=ROUTE_POINTS)
+def _local(w, b, a, c, fl: Flags, anywhere: bool, go=True):
+    """`geometry.local_route` on the episode's scene: ((ROUTE_POINTS, 2) points, count); the straight segment
+    where `go` is False. A segment's route is searched in the LOCAL_WINDOW-cell block round it; with `anywhere`
+    (approaches), where that finds none, again in a block as large as the padded grid, whose whole-block tiers
+    are the host's whole house."""
+    route = lambda window, anywhere, go: geo.local_route(  # noqa: E731
+        a, c, _obs(w, b), w.grid_origin[b], w.grid_clear[b], w.grid_shape[b], fl.need, fl.tight, anywhere,
+        window=window, max_points=ROUTE_POINTS, go=go)
+    p, n = route(geo.LOCAL_WINDOW, False, go)
+    if not anywhere:
+        return p, n
+    q, m = route(-(-max(w.grid_clear.shape[1:]) // 32) * 32, True, go & (n <= 2))
+    return jnp.where(n <= 2, q, p), jnp.where(n <= 2, m, n)
 
 
 def _drive_points(pts, n, is_node, nodes, raw, w, b, fl: Flags):
-    """`episode.Loop.drive_points`: local plans where segments pass too close, then densified. Map edges take
+    """`host_loop.Loop.drive_points`: local plans where segments pass too close, then densified. Map edges take
     the plans made on the host before the loop; the first and last segment of a leg (which may end off the
     map) are planned here. `raw`: pts[:ROUTE_POINTS] is a grid route round an obstacle, whose every segment is
     planned again (as the host's drive_points does)."""
     K = w.plans.shape[2]
     last = jnp.maximum(n - 2, 0)
-    p0, n0 = _local(w, b, pts[0], pts[1], fl, False)
-    p1, n1 = _local(w, b, pts[last], pts[last + 1], fl, False)
-    pad = lambda p: jnp.concatenate([p, jnp.repeat(p[-1:], K - p.shape[0], 0)])  # noqa: E731
     use = jnp.stack([(n >= 2) & ~(is_node[0] & is_node[1]), (n >= 2) & ~(is_node[last] & is_node[last + 1])])
+    p0, n0 = _local(w, b, pts[0], pts[1], fl, False, use[0] & ~raw)
+    p1, n1 = _local(w, b, pts[last], pts[last + 1], fl, False, use[1] & ~raw)
+    pad = lambda p: jnp.concatenate([p, jnp.repeat(p[-1:], K - p.shape[0], 0)])  # noqa: E731
     way, m = _splice(pts, n, is_node, nodes, (jnp.stack([pad(p0), pad(p1)]), jnp.stack([n0, n1]), use), w, b)
     route = pts[:ROUTE_POINTS]  # (the caller's buffer holds at least ROUTE_POINTS)
-    plans, cnt = jax.vmap(lambda a, c: _local(w, b, a, c, fl, False))(route[:-1], route[1:])
+    seg = raw & (jnp.arange(ROUTE_POINTS - 1) < n - 1)
+    plans, cnt = jax.vmap(lambda a, c, go: _local(w, b, a, c, fl, False, go))(route[:-1], route[1:], seg)
     rway, rm = geo.join_plans(route, jnp.minimum(n, ROUTE_POINTS), plans, cnt, jnp.ones(ROUTE_POINTS - 1, bool))
     dp, dn = geo.densify_or_keys(way, m, pts, n, fl.path_points)
     rp, rn = geo.densify_or_keys(rway, rm, route, jnp.minimum(n, ROUTE_POINTS), fl.path_points)
@@ -310,8 +320,8 @@ def leg_waypoints(st, inp, w, pose, fl: Flags):
         direct = (jnp.zeros((L, 2), jnp.float32).at[0].set(here).at[1].set(stop), jnp.int32(2), jnp.zeros(L, bool),
                   jnp.full(L, -1, jnp.int32), jnp.asarray(False))
         clear = inp.straight | (segment_clearance(here[None], stop[None], _obs(w, b), jnp)[0] >= fl.need)
-        # round what is in the way on the grid; else over the map (`episode.Loop.approach_route`)
-        ap, an = _local(w, b, here, stop, fl, True)
+        # round what is in the way on the grid; else over the map (`host_loop.Loop.approach_route`)
+        ap, an = _local(w, b, here, stop, fl, True, (st.leg_kind == APPROACH) & ~clear)
         around = (jnp.zeros((L, 2), jnp.float32).at[: ap.shape[0]].set(ap), an, jnp.zeros(L, bool),
                   jnp.full(L, -1, jnp.int32), jnp.asarray(True))
         a = geo.attach(w.pos[b], w.node_mask[b], _obs(w, b), here, fl.robot_radius)
@@ -352,7 +362,7 @@ def _nearest_object(ok, w, b, xy):
 
 
 def after_leg(st, inp, w, pose, arrived, visible, lam, fl: Flags):
-    """The reflection after the leg just driven (`episode.Loop.after_leg`); visible (O,) bool."""
+    """The reflection after the leg just driven (`host_loop.Loop.after_leg`); visible (O,) bool."""
     b, g, kind = inp.b, st.leg_goal, st.leg_kind
 
     def look(st):

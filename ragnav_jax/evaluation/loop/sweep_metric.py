@@ -87,7 +87,8 @@ def _candidates(le: LoopEpisodes, params, *, k: int, depth: int, widen: bool, cl
             has[..., None] & r.has_est[idx])
 
 
-def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, ranking: dict, init, drive, look):
+def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, refill: float, ranking: dict, init, advance,
+            look):
     """Sums (V, C, Mods) of every NAMES metric for a chunk of grid points (params as Grid.chunk gives them)."""
     f = jax.vmap(functools.partial(_candidates, **ranking), in_axes=(None, _in_axes(inner)))
     if outer:
@@ -100,8 +101,8 @@ def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, ranking: 
     tile = lambda x: jnp.broadcast_to(x, (V, C, *x.shape)).reshape((V * C * x.shape[0], *x.shape[1:]))  # noqa: E731
     inp = jax.tree.map(tile, le.base).replace(cands=flat(cands), est=flat(est), has_est=flat(has))
     lams = jnp.broadcast_to(lam[None, :, None], (V, C, E)).reshape(-1)
-    st = program.closed_loop(le.world, inp, tile(le.scene_idx), tile(le.start), lams, fl=fl, init=init, drive=drive,
-                             look=look)
+    st = program.closed_loop(le.world, inp, tile(le.scene_idx), tile(le.start), lams, jnp.float32(refill), fl=fl,
+                             init=init, advance=advance, look=look)
     out = jax.vmap(lambda s, n, o, m: judge(s, n, o, m, fl.max_steps))(st, tile(le.num_true), tile(le.strict),
                                                                         tile(le.oracle_m))
     group = le.group.astype(jnp.float32)
@@ -113,14 +114,10 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
                   executor=None, verifier=None):
     """(LoopEpisodes, totals (Mods,) episodes per modality, host Loop, the ranking's static settings) for RAGNav
     on these episodes."""
-    from ragnav_jax.evaluation.episode import (
-        CANDIDATE_DEPTH,
-        grounder,
-        method_spec,
-        prepare_episodes,
-        ruled_out,
-    )
+    from ragnav_jax.evaluation.methods import method_spec
     from ragnav_jax.evaluation.metrics import _oracle_length
+    from ragnav_jax.evaluation.navigate import prepare_episodes
+    from ragnav_jax.evaluation.ranking import CANDIDATE_DEPTH, grounder, ruled_out
     from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
     from ragnav_jax.retrieval.evaluate import prepare_batch
 
@@ -189,8 +186,8 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     le, totals, loop, ranking = loop_episodes(cfg, bank, scenes, episodes, embedder, modalities, executor, verifier)
     fl = program.flags_of(cfg, loop.look_cost)
     ex = loop.ex
-    fn = jax.jit(functools.partial(_points, outer=tuple(grid.outer), inner=tuple(grid.inner), fl=fl, ranking=ranking,
-                                   init=ex.init, drive=ex.drive, look=ex.look_fn))
+    fn = jax.jit(functools.partial(_points, outer=tuple(grid.outer), inner=tuple(grid.inner), fl=fl,
+                                   refill=cfg.eval.refill, ranking=ranking, init=ex.init, advance=ex.advance, look=ex.look_fn))
     last: dict = {}
 
     def part(name):

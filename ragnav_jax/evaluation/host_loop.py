@@ -1,32 +1,13 @@
-"""The closed loop: perception (retrieval) - planning - execution (MJX) - reflection, over many episodes.
+"""The host engine of the closed loop (`eval.engine=host`): each episode's state (`EpisodeState`), the state
+machine that picks its next leg and reflects on arrival (`Loop`), its visiting order (`plan_order`), and
+`_run_chunk`, which drives a batch of episodes leg by leg.
 
-    rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, method="ragnav", streams=streams)
-
-Phases (host Python only between them; every simulation step runs inside a jitted batched call):
-1. Plan: parse every instruction, retrieve the top-`eval.candidates` nodes of every subgoal in one
-   batched kernel call (`retrieve_candidates`), solve each episode's visiting order.
 2. Execute legs: every active episode drives its current leg together (`execute.Executor.run`:
    lax.while_loop over control steps, vmapped over episodes and their scenes' geometry).
 3. Reflect on arrival (`Executor.look`: camera visibility at several headings from the simulated
    pose; the verifier's verdict table: is a visible object the subgoal's target?). Confirmed: drive up to it (an approach
    leg) and declare FOUND. Not confirmed, or the approach is blocked: reject the candidate, take the
    goal's next candidate and re-plan the remaining order, at most `eval.retries` times per goal.
-The loop runs the subgoals it read, as many as it read and in the order type it read (strict: as written;
-free: its own plan); it never sees the episode file's goals or order (only the Oracle does).
-Judging (MultiON-style, on the simulated trajectory only): a FOUND counts for the true goal the robot
-approached when it is one not found yet, else for the nearest such goal within `eval.found_radius` of the
-robot's simulated position, whichever subgoal it was made for; passing near a goal without declaring does
-not count; a FOUND at no true goal is a recorded wrong declaration and fails the episode. An episode
-succeeds when every true goal was found (strict episodes: in the episode's order) within `eval.max_steps`.
-
-Methods (flags of one loop, `method_spec`): RAGNav and its retrieval ablations; `ragnav:no_topology`
-also plans and drives straight lines (no map); the retrieval baselines (naive_rag, graphrag, lightrag)
-on RAGNav's planner; navigation baselines reimplemented *in the style of* the papers: `remembr`
-(flat caption memory with positions, text retrieval plus a position term, instruction order, the same
-map paths and local planner as RAGNav), `etpnav` (no prior memory: replays the robot's own frontier
-exploration from the start pose until the target is seen, then approaches it; instruction order) and
-`oracle` (true goal positions, optimal order, topological paths). Every method but the Oracle checks
-what it sees with the same open-vocabulary verifier (`verify.py`: a verdict table computed before the loop).
 """
 
 from __future__ import annotations
@@ -34,389 +15,38 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-import time
-from collections import defaultdict, deque
-from collections.abc import Collection, Sequence
+from collections import deque
+from collections.abc import Sequence
 
-import jax
 import jax.numpy as jnp
 import numpy as np
 
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
-from ragnav_jax.evaluation.execute import Executor, densify, make_executor, pad_points
-from ragnav_jax.evaluation.grounding import MemoryGrounder, TaggedReading
-from ragnav_jax.evaluation.search import search_table
-from ragnav_jax.evaluation.verify import Verifier, memory_views, name_classes, recorded, verdict_table, vocabulary
+from ragnav_jax.evaluation.clearance import (
+    CLOSER_GAP_M,
+    ESCAPE_M,
+    GRID_M,
+    GRID_MARGIN_M,
+    GRID_WINDOW_M,
+    SAME_INSTANCE_M,
+    THIN_M,
+    TIGHT_GAP_M,
+    TIGHT_PENALTY,
+    approach_ring,
+    box_distance,
+    segment_clearance_np,
+)
+from ragnav_jax.evaluation.execute import Executor, densify, pad_points
+from ragnav_jax.evaluation.methods import MethodSpec
+from ragnav_jax.evaluation.ranking import Candidates
 from ragnav_jax.language.episodes import Episode
-from ragnav_jax.language.tagger import load_tagger
-from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.paths import reconstruct_path
-from ragnav_jax.memory.topomap import segment_clearance as _segment_clearance
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.planning.order import order_of
-from ragnav_jax.pytrees import take
-from ragnav_jax.retrieval import kernels as K
-from ragnav_jax.retrieval.baselines import BASELINES, TextMemory
-from ragnav_jax.retrieval.evaluate import goal_items, parsed_order, prepare_batch, scored_batch
-from ragnav_jax.retrieval.index import node_slots
-from ragnav_jax.retrieval.params import ablation_params, params_from_config
-from ragnav_jax.retrieval.score import score_subgoal
 from ragnav_jax.world.scene import Scene
 
-NAV_METHODS = ("ragnav", "ragnav:no_forest", "ragnav:no_topology", "ragnav:no_spatial", "ragnav:no_boost",
-               "naive_rag", "graphrag", "lightrag", "remembr", "etpnav", "oracle")
-THIN_M = 0.3  # metres between replayed exploration waypoints (ETPNav-style)
-SAME_INSTANCE_M = 0.5  # a seen object this close to the retrieved instance's estimated position is that instance
-TIGHT_PENALTY = 10.0  # driving-path cost factor of map edges that pass closer to an obstacle than the robot's radius
-GRID_M = 0.05  # occupancy grid of the local planner (metres per cell)
-GRID_MARGIN_M = 0.04  # clearance beyond the robot's radius the local planner keeps
-GRID_WINDOW_M = 1.5  # metres around a tight segment the local planner searches first (approaches: then the whole house)
-TIGHT_GAP_M = 0.0  # clearance beyond the robot's radius of the passages the local planner tries last
-ESCAPE_M = 0.3  # metres around a leg's ends where the local planner may pass cells as tight as the end itself
-CANDIDATE_DEPTH = 8  # ranked nodes per candidate slot searched for distinct instances
 REVISIT = re.compile(r"\b(?:back|again|return|returning|revisit|once\s+more)\b")  # a goal that goes back to an object
-CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
-
-
-@dataclasses.dataclass(frozen=True)
-class MethodSpec:
-    name: str
-    retrieval: str  # what ranks the memory's nodes: "kernel" (RAGNav's scores), "text" (a text-retrieval model),
-    # "truth" (the true goals' nodes: the Oracle) or "none" (the ETPNav-style baseline explores instead)
-    straight: bool  # straight-line legs and Euclidean order costs (no topological map)
-    optimal_order: bool  # solve the order (False: instruction order)
-    search: bool = True  # candidates run out: search the key poses where the instruction puts the goal (search.py)
-    reads: bool = True  # reads the instruction and checks what it sees (False: the Oracle, which knows the goals)
-    explores: bool = False  # finds goals by replaying its exploration, with no retrieval (the ETPNav-style baseline)
-    variant: str = "ragnav"  # kernel: the ablation ("ragnav", "no_forest", ...); text: the model (a BASELINES name)
-    positions: bool = False  # text: a position in the instruction adds a Gaussian term over node positions (ReMEmbR)
-
-
-def segment_clearance_np(p: np.ndarray, q: np.ndarray, obs: dict) -> np.ndarray:
-    """(P,) clearance of segments p-q (P, 2) to a scene's walls and blocking objects (host NumPy)."""
-    return _segment_clearance(np.asarray(p, np.float32), np.asarray(q, np.float32), obs, np)
-
-
-def method_spec(name: str) -> MethodSpec:
-    if name not in NAV_METHODS:
-        raise UserError(f"unknown method '{name}' (known: {', '.join(NAV_METHODS)})")
-    if name.startswith("ragnav"):
-        variant = name.split(":", 1)[1] if ":" in name else "ragnav"
-        return MethodSpec(name, "kernel", variant == "no_topology", True, variant=variant)
-    if name in BASELINES:
-        return MethodSpec(name, "text", False, True, variant=name)
-    # ReMEmbR hands its retrieved goal to a standard navigation stack: the same map paths and local planner as
-    # RAGNav here (it once drove straight lines into walls, which measured a crippled navigator, not its memory).
-    # The ETPNav-style baseline explores for itself, and the Oracle knows where every goal is: neither searches.
-    return {"remembr": MethodSpec(name, "text", False, False, variant="naive_rag", positions=True),
-            "etpnav": MethodSpec(name, "none", False, False, search=False, explores=True),
-            "oracle": MethodSpec(name, "truth", False, True, search=False, reads=False)}[name]
-
-
-def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:
-    """(4 * per_side + 12, 2) stops at distance `gap` from a box footprint (centre c, half sizes): along
-    each side's outward normal, and three directions round each corner."""
-    t = np.linspace(-1.0, 1.0, per_side + 2)[1:-1]
-    out = []
-    for axis in (0, 1):
-        other = 1 - axis
-        for sign in (-1.0, 1.0):
-            p = np.zeros((per_side, 2), np.float32)
-            p[:, axis] = c[axis] + sign * (half[axis] + gap)
-            p[:, other] = c[other] + t * half[other]
-            out.append(p)
-    for sx in (-1.0, 1.0):
-        for sy in (-1.0, 1.0):
-            corner = c + np.asarray([sx, sy]) * half
-            for a in (0.0, math.pi / 4, math.pi / 2):
-                out.append((corner + gap * np.asarray([sx * math.cos(a), sy * math.sin(a)]))[None])
-    return np.concatenate(out).astype(np.float32)
-
-
-# ----------------------------------------------------------------------------------------------------
-# Perception checks
-
-
-def box_distance(obj, xy) -> float:
-    """Planar metres from a point to an object's box footprint (0 inside)."""
-    dx = max(0.0, abs(xy[0] - obj.position[0]) - obj.size[0] / 2)
-    dy = max(0.0, abs(xy[1] - obj.position[1]) - obj.size[1] / 2)
-    return math.hypot(dx, dy)
-
-
-def ruled_out(verifier, sg: Subgoal | None, names, texts, vocab, classes, est: np.ndarray,
-              location_radius: float) -> bool:
-    """RAGNav's pre-check of a candidate instance on what the memory holds: its recorded names and
-    descriptions contradict the target (Verifier.contradicts), or its estimated position lies beyond the
-    coordinate hint's radius."""
-    if sg is None:
-        return False
-    if sg.location is not None and math.dist(est, (sg.location.x, sg.location.y)) > location_radius:
-        return True
-    return verifier.contradicts(sg, names, texts, vocab, classes)
-
-
-# ----------------------------------------------------------------------------------------------------
-# Perception phase: candidates for every subgoal of every episode
-
-
-@dataclasses.dataclass
-class Candidates:
-    subgoals: list  # per episode: tuple of Subgoal, or None (parse failure)
-    nodes: list  # per episode: list (per goal) of candidate node lists, best first
-    timing: dict
-    est: list | None = None  # per episode, per goal, per candidate: (2,) estimated target position or None
-    top: list = dataclasses.field(default_factory=list)  # per episode, per goal: the retrieval's top-1 node or None
-    scores: list = dataclasses.field(default_factory=list)  # per episode, per goal, per candidate: retrieval score
-    # (RAGNav: the relaxed one for candidates the hard constraints dropped) or None (Oracle)
-    ungrounded: dict = dataclasses.field(default_factory=dict)  # episode id -> parsed goal phrases naming nothing
-    # the memory knows, dropped before retrieval (evaluation/grounding.py), or remarks the tagger dropped
-    tagged: dict = dataclasses.field(default_factory=dict)  # episode id -> goal phrases the tagger added (eval.tagger)
-
-
-@jax.jit
-def _ranked_terms(index, queries, params):
-    """What candidate_order ranks by, for every (scene, subgoal slot, node), each (B, Q, N): the final
-    score, the relaxed score, category match, and the node's best-matching observation slot (int32)."""
-    s, ex = scored_batch(index, queries, params)
-    return s, ex["relaxed"], ex["category"], ex["instance"]
-
-
-def candidate_order(score: np.ndarray, relaxed: np.ndarray, category: np.ndarray, live: np.ndarray,
-                    widen: bool) -> np.ndarray:
-    """Node indices, best first, that the reflection may try for one subgoal; all inputs (N,).
-
-    Without `widen`: the nodes the retrieval kept (score > K.NEG / 2), by score, as top-k retrieval.
-    With it (RAGNav's reflection, ours): the retrieval's top-1 first (so the retrieval accuracy is the
-    kernel's), then four tiers, each by score: kept nodes whose instance is of the target's category;
-    the category matches the hard constraints (the forest's region lock, anchor validation) dropped, by
-    their relaxed score; the other kept nodes; the rest. A hard constraint that chose the wrong region
-    then costs a rejected candidate, not the goal.
-    """
-    kept = live & (score > K.NEG / 2)
-    idx = np.flatnonzero(kept)
-    idx = idx[np.argsort(-score[idx], kind="stable")]
-    if not widen or not len(idx):
-        return idx
-    rest = np.flatnonzero((kept | (live & (relaxed > K.NEG / 2))) & (np.arange(len(score)) != idx[0]))
-    tier = np.where(category, 0, 2) + np.where(kept, 0, 1)
-    key = np.where(kept, score, relaxed)
-    return np.concatenate([idx[:1], rest[np.lexsort((-key[rest], tier[rest]))]])
-
-
-_score_single = jax.jit(score_subgoal)
-
-
-def distinct_instances(inst: Sequence[int], k: int) -> list[int]:
-    """Positions of the first k ranked candidates whose matched instances differ (-1: no instance, always
-    distinct); topped up with the best remaining ones when fewer than k instances are ranked. A rejected
-    candidate then hands over to another object, not to another view of the same one."""
-    pick, seen = [], set()
-    for j, c in enumerate(inst):
-        if len(pick) == k:
-            break
-        if c < 0 or c not in seen:
-            pick.append(j)
-            seen.add(c)
-    rest = [j for j in range(len(inst)) if j not in pick]
-    return pick + rest[: k - len(pick)]
-
-
-def closest_view(slot_inst: np.ndarray, node_pos: np.ndarray, node_live: np.ndarray, est: np.ndarray, inst: int,
-                 default: int) -> int:
-    """The live key pose, among those that recorded instance `inst`, nearest to its estimated position `est`.
-
-    slot_inst (N, S) instance of each node's slots; node_pos (N, 2); node_live (N,); est (2,). The best-scoring
-    node describes the instance best, but may have seen it from across the room; the leg ends where the
-    memory saw it from closest (the Oracle's rule, on the memory's own estimates). `default` if none did.
-    """
-    saw = (slot_inst == inst).any(-1) & node_live
-    if not saw.any():
-        return default
-    d = np.linalg.norm(node_pos - est[None], axis=-1)
-    return int(np.argmin(np.where(saw, d, np.inf)))
-
-
-def view_nodes(nodes: Sequence[int], insts: Sequence[int], slot_inst: np.ndarray, node_pos: np.ndarray,
-               node_live: np.ndarray, inst_pos: np.ndarray) -> list[int]:
-    """Where each candidate's leg ends: the first candidate of an instance at its `closest_view`; a later
-    candidate of the same instance (or one without an instance, -1) keeps its own node, so a retry sees
-    the instance from elsewhere. inst_pos (I, 2)."""
-    out, first = list(nodes), set()
-    for c, i in enumerate(insts):
-        if i >= 0 and i not in first:
-            first.add(i)
-            out[c] = closest_view(slot_inst, node_pos, node_live, inst_pos[i], i, out[c])
-    return out
-
-
-def _oracle_node(bank: MemoryBank, b: int, gidx: int) -> int:
-    """The key pose that observed scene object `gidx` from closest (ground truth: the Oracle); -1 if none did."""
-    obs = np.asarray(bank.memory.obs_object[b])
-    dist = np.asarray(bank.memory.obs_distance[b])
-    hit = obs == gidx
-    if hit.any():
-        d = np.where(hit, dist, np.inf).min(1)
-        return int(np.argmin(d))
-    return -1
-
-
-@dataclasses.dataclass
-class _Ranked:
-    """What a retrieval gives per (episode id, subgoal index): candidate nodes, best first, and per candidate the
-    instance's estimated position (RAGNav) and score; the kernel's top-1 before any pre-check; timings."""
-
-    nodes: dict = dataclasses.field(default_factory=dict)
-    est: dict = dataclasses.field(default_factory=dict)
-    top: dict = dataclasses.field(default_factory=dict)
-    score: dict = dataclasses.field(default_factory=dict)
-    timing: dict = dataclasses.field(default_factory=lambda: {"retrieval_ms_single": 0.0, "retrieval_ms_batched": 0.0,
-                                                              "embed_ms": 0.0})
-
-
-def _kernel_ranked(spec: MethodSpec, bank: MemoryBank, scenes, episodes, embedder, cfg: Config, verifier, ground
-                   ) -> _Ranked:
-    """RAGNav and its ablations (spec.variant): the retrieval kernel's ranking, distinct instances, the
-    pre-check on the memory's records and the closest view."""
-    k, out = cfg.eval.candidates, _Ranked()
-    by_name = {s.name: s for s in scenes}
-    p = ablation_params(params_from_config(cfg.retrieval), spec.variant)
-    batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True, bucket_slots=True)
-    out.timing["embed_ms"] = bmeta.embed_ms
-    if batch is None:
-        return out
-    rec = [recorded(m, by_name[m.scene]) if m.scene in by_name else ({}, {}) for m in bank.metas]
-    name_of = [r[1] for r in rec]  # per scene: caption phrase -> the name it used
-    classes = [name_classes(r[0])[0] for r in rec]  # per scene: name -> its aliases
-    vocab = [vocabulary(r[0]) for r in rec]  # per scene: every name
-    jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
-    t0 = time.perf_counter()
-    terms = jax.block_until_ready(_ranked_terms(batch.index, batch.queries, p))
-    live = sum(sl is not None for sl in bmeta.slots)
-    out.timing["retrieval_ms_batched"] = 1e3 * (time.perf_counter() - t0) / max(live, 1)
-    score, relaxed, category, slot_best = map(np.asarray, terms)  # each (B, Q, N)
-    node_live = np.asarray(batch.index.node_mask)  # (B, N)
-    b0, s0 = next(sl for sl in bmeta.slots if sl is not None)
-    idx0 = take(batch.index, b0)
-    q0 = take(batch.queries, (b0, s0))
-    jax.block_until_ready(_score_single(idx0, q0, p))
-    ts = []
-    for _ in range(5):
-        t0 = time.perf_counter()
-        jax.block_until_ready(_score_single(idx0, q0, p))
-        ts.append(time.perf_counter() - t0)
-    out.timing["retrieval_ms_single"] = 1e3 * float(np.median(ts))
-    # Where each candidate node's best-matching instance is (the index associates detections into
-    # instances with estimated positions): the reflection looks for the target there.
-    slot_inst = np.asarray(batch.index.slot_inst)  # (B, N, S)
-    inst_pos = np.asarray(batch.index.inst_pos)[..., :2]  # (B, I, 2)
-    node_pos = np.asarray(batch.index.node_pos)[..., :2]  # (B, N, 2)
-    for (ep, kk, _goal, sg), sl in zip(bmeta.items, bmeta.slots):
-        if sl is None:
-            continue
-        b_, q_ = sl
-        ranked = candidate_order(score[sl], relaxed[sl], category[sl], node_live[b_], cfg.eval.widen)
-        ranked = [int(n) for n in ranked[: k * CANDIDATE_DEPTH]]
-        out.top[(ep.id, kk)] = ranked[0] if ranked else None
-        inst = [int(slot_inst[b_, n, slot_best[b_, q_, n]]) for n in ranked]
-        pick = distinct_instances(inst, len(inst))
-        if cfg.eval.precheck and verifier is not None:  # on the memory's own records (no driving)
-            texts = [bmeta.imetas[b_].instance_phrases[inst[j]] if inst[j] >= 0 else () for j in pick]
-            kept = [j for j, ts in zip(pick, texts) if inst[j] < 0 or not ruled_out(
-                verifier, sg, [name_of[b_].get(t, t) for t in ts], ts, vocab[b_], classes[b_],
-                inst_pos[b_, inst[j]], cfg.episodes.location_radius)]
-            pick = kept or pick  # everything ruled out: the check, not the memory, is likely wrong
-        pick = pick[:k]
-        nodes = [ranked[j] for j in pick]
-        if cfg.eval.closest_view:  # drive to the key pose that saw the instance from closest
-            nodes = view_nodes(nodes, [inst[j] for j in pick], slot_inst[b_], node_pos[b_], node_live[b_], inst_pos[b_])
-        out.nodes[(ep.id, kk)] = nodes
-        out.est[(ep.id, kk)] = [inst_pos[b_, inst[j]].copy() if inst[j] >= 0 else None for j in pick]
-        s_, r_ = score[sl], relaxed[sl]
-        out.score[(ep.id, kk)] = [float(s_[n] if s_[n] > K.NEG / 2 else r_[n]) for n in (ranked[j] for j in pick)]
-    return out
-
-
-def _text_ranked(spec: MethodSpec, bank: MemoryBank, scenes, items, embedder, cfg: Config) -> _Ranked:
-    """A text-retrieval baseline (spec.variant, BASELINES) over the memory's captions, each subgoal's text as the
-    query; spec.positions adds ReMEmbR's position term."""
-    k, out = cfg.eval.candidates, _Ranked()
-    by_name = {s.name: s for s in scenes}
-    t_total, n_total = 0.0, 0
-    for b, meta in enumerate(bank.metas):
-        mine = [it for it in items if it[0].scene == meta.scene and it[3] is not None]
-        if not mine or meta.num_nodes == 0:
-            continue
-        objs, phrases = node_slots(meta, by_name[meta.scene])
-        mem = TextMemory(tuple(meta.captions), tuple(tuple(p) for p in phrases))
-        model = BASELINES[spec.variant](mem, embedder)
-        t0 = time.perf_counter()
-        s = np.asarray(model.scores([it[3].text or it[0].instruction for it in mine]))[:, : meta.num_nodes]
-        if spec.positions:  # ReMEmbR's memory keeps positions: a position query adds a term
-            pos = np.asarray(bank.memory.position[b, : meta.num_nodes, :2])
-            for q, it in enumerate(mine):
-                if it[3].location is not None:
-                    d2 = np.sum((pos - [it[3].location.x, it[3].location.y]) ** 2, 1)
-                    s[q] += np.exp(-d2 / (2 * cfg.retrieval.sigma_loc**2))
-        t_total += time.perf_counter() - t0
-        n_total += len(mine)
-        for it, row in zip(mine, s):
-            out.nodes[(it[0].id, it[1])] = [int(x) for x in np.argsort(-row, kind="stable")[:k]]
-            out.score[(it[0].id, it[1])] = [float(row[x]) for x in out.nodes[(it[0].id, it[1])]]
-    out.timing["retrieval_ms_single"] = out.timing["retrieval_ms_batched"] = 1e3 * t_total / max(n_total, 1)
-    return out
-
-
-def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
-    """The Oracle: each true goal's node."""
-    out, names = _Ranked(), list(bank.names)
-    by_name = {s.name: s for s in scenes}
-    for ep, kk, goal, _sg in items:
-        if goal is None:
-            continue
-        gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
-        node = _oracle_node(bank, names.index(ep.scene), gidx)
-        out.nodes[(ep.id, kk)] = [node] if node >= 0 else []
-    return out
-
-
-def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, verifier: Verifier | None):
-    """What turns a parse into the subgoals run (evaluation/grounding.py, the tagger), or None."""
-    ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
-    if cfg.eval.tagger and spec.reads:
-        tagger = load_tagger(cfg.eval.tagger_file)
-        conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
-        ground = TaggedReading(tagger, episodes, conf, then=ground)
-    return ground
-
-
-def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
-                        embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
-    """Top-k candidate nodes per subgoal for a method (spec.retrieval); timings of the retrieval kernels.
-    RAGNav's pre-check (`eval.precheck`) needs the verifier."""
-    ground = grounder(spec, bank, scenes, episodes, cfg, verifier)
-    items = goal_items(episodes, ground, every_subgoal=True)
-    subgoals: dict[str, object] = {}
-    for ep, _kk, _goal, sg in items:
-        subgoals.setdefault(ep.id, None)
-        if sg is not None:
-            subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
-    r = {"kernel": lambda: _kernel_ranked(spec, bank, scenes, episodes, embedder, cfg, verifier, ground),
-         "text": lambda: _text_ranked(spec, bank, scenes, items, embedder, cfg),
-         "truth": lambda: _truth_ranked(bank, scenes, items),
-         "none": _Ranked}[spec.retrieval]()
-    per_ep: dict[str, list] = defaultdict(list)
-    est_ep: dict[str, list] = defaultdict(list)
-    for ep, kk, _goal, _sg in items:
-        per_ep[ep.id].append(r.nodes.get((ep.id, kk), []))
-        est_ep[ep.id].append(r.est.get((ep.id, kk), [None] * len(r.nodes.get((ep.id, kk), []))))
-    top = [[r.top[(ep.id, kk)] if (ep.id, kk) in r.top else (c[0] if c else None)
-            for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
-    scores = [[r.score.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
-    return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], r.timing,
-                      [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {},
-                      getattr(ground, "added", {}))
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -1009,94 +639,6 @@ class Loop:
         return lo + int(np.argmin(d))
 
 
-def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
-                     spec: MethodSpec, streams: dict | None = None, executor: Executor | None = None,
-                     verifier: Verifier | None = None, trace: Collection[str] = ()):
-    """Everything before the first leg, for either engine: (loop, states, candidates, the Oracle's candidates,
-    task time per episode). Parses, grounds and retrieves for every episode, computes the verdict and search
-    tables and each episode's first plan."""
-    names = list(bank.names)
-    unknown = sorted({ep.scene for ep in episodes} - set(names))
-    if unknown:
-        raise UserError(f"episodes refer to scenes without memory: {', '.join(unknown)}")
-    used = [s for s in scenes if s.name in {ep.scene for ep in episodes}]
-    ex = executor or make_executor(used, cfg)
-    loop = Loop(spec, bank, scenes, cfg, ex, streams)
-    # 1. instruction -> plan, for all episodes (host wall clock: parsing, embedding, retrieval, order)
-    t0 = time.perf_counter()
-    verifier = verifier or Verifier.build(embedder, cfg)
-    cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
-    oracle = cands if spec.retrieval == "truth" else retrieve_candidates(method_spec("oracle"), bank, scenes, episodes,
-                                                                          embedder, cfg)
-    t1 = time.perf_counter()
-    views = memory_views(verifier, bank, scenes) if spec.reads else {}
-    if spec.reads:  # the reflection's check, one verdict per (episode, goal, object)
-        loop.verdicts = verdict_table(verifier, views, episodes, cands.subgoals)
-        if cfg.eval.fallback:
-            loop.misfits = verdict_table(verifier, views, episodes, cands.subgoals, graded=True)
-    if spec.search and cfg.eval.search_nodes:
-        loop.search = search_table(verifier, views, bank, episodes, cands.subgoals, cfg.eval.search_nodes)
-    cands.timing["verify_s"] = time.perf_counter() - t1
-    states = []
-    for e, ep in enumerate(episodes):
-        b = names.index(ep.scene)
-        sc = loop.scenes[ep.scene]
-        # the goals run: the subgoals read from the instruction (the Oracle, and an unread instruction: the true ones)
-        sgs = cands.subgoals[e]
-        G = len(ep.goals) if not spec.reads or sgs is None else len(sgs)
-        strict = ep.order == "strict" if not spec.reads or sgs is None else parsed_order(ep.instruction) == "strict"
-        start = loop.nearest(b, sc.start.position[:2])
-        ests = ((cands.est[e] if cands.est else []) + [[]] * G)[:G]
-        st = EpisodeState(e, ep, b, ex.names.index(ep.scene), sgs, (cands.nodes[e] + [[]] * G)[:G], ests, [0] * G,
-                          [0] * G, list(range(G)), start, ["pending"] * G, strict, [False] * len(ep.goals))
-        if not spec.explores:
-            loop.replan(st)
-        st.planned = list(st.remaining)
-        st.trace = trace_of(loop, st, cands) if ep.id in trace else None
-        states.append(st)
-    task_time = (time.perf_counter() - t0) / max(len(episodes), 1)
-    return loop, states, cands, oracle, task_time
-
-
-def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
-                        method: str | None = None, streams: dict | None = None, progress: bool = False,
-                        executor: Executor | None = None, verifier: Verifier | None = None,
-                        trace: Collection[str] = ()) -> tuple[list[dict], dict]:
-    """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
-    the same episodes can share one `verifier` (and its encoder cache). The rows of the episode ids in
-    `trace` also hold "legs" with per-step poses and a "trace" (candidates, rejections: `trace_of`).
-    `eval.engine` picks the loop: "host" (`_run_chunk`, one batched MJX call per leg) or "device"
-    (`evaluation/loop/program.py`, the whole loop one jitted program; etpnav, traces and record_legs run on
-    the host)."""
-    from ragnav_jax.evaluation.metrics import episode_row, summarise
-
-    method = method or cfg.eval.method
-    spec = method_spec(method)
-    loop, states, cands, oracle, task_time = prepare_episodes(bank, scenes, episodes, embedder, cfg, spec, streams,
-                                                              executor, verifier, trace)
-    # 2./3. execute and reflect, a batch of episodes at a time
-    t0 = time.perf_counter()
-    B = min(cfg.eval.batch_size, max(len(states), 1))
-    bar = _progress(len(states), progress, method)
-    if cfg.eval.engine == "device" and not spec.explores and not trace and not cfg.eval.record_legs:
-        from ragnav_jax.evaluation.loop.program import run_device
-
-        run_device(loop, states, cfg, progress=bar)
-    else:
-        for c0 in range(0, len(states), B):
-            chunk = states[c0 : c0 + B]
-            _run_chunk(loop, chunk, B, cfg)
-            bar(len(chunk))
-    bar(0, close=True)
-    cands.timing["loop_s"] = time.perf_counter() - t0
-    rows = [episode_row(st, loop, oracle.nodes[st.e], cands, cfg, method) for st in states]
-    for r, st in zip(rows, states):
-        if st.trace is not None:
-            r["trace"] = st.trace
-    summary = summarise(rows, cands.timing, task_time, method)
-    return rows, summary
-
-
 def trace_of(loop: Loop, st: EpisodeState, cands: Candidates) -> dict:
     """An episode's recorder: per goal its candidates (node, node xy, retrieval score, estimated target
     position) and the rejections the loop appends (goal, candidate index, why, index of the leg after
@@ -1114,21 +656,6 @@ def trace_of(loop: Loop, st: EpisodeState, cands: Candidates) -> dict:
 
 def _xy(v) -> list[float]:
     return [round(float(x), 3) for x in v[:2]]
-
-
-def _progress(total: int, on: bool, label: str):
-    if not on:
-        return lambda n, close=False: None
-    from tqdm import tqdm
-
-    bar = tqdm(total=total, desc=f"eval {label}", unit="ep")
-
-    def step(n, close=False):
-        bar.update(n)
-        if close:
-            bar.close()
-
-    return step
 
 
 def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
