@@ -529,9 +529,9 @@ class EvalConfig:
     batch_size: int = 512  # episodes executed together in one vmapped call
     engine: str = "host"  # "device": the whole closed loop as one jitted program (evaluation/loop/; not etpnav,
     # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/host_loop.py
-    refill: float = 0.5  # device engine: share of the legs going that end before the loop reflects on them and
-    # starts their next legs while the others drive on (1.0: every leg of the batch ends first). Rows do not
-    # depend on it; speed does (short legs stop waiting for the batch's longest)
+    refill: float = 1.0  # device engine: share of the batch whose legs end before the loop reflects on them and
+    # starts their next legs while the others drive on (all that are going where fewer are; 1.0: every leg of the
+    # batch ends first). Rows do not depend on it; speed does (short legs stop waiting for the batch's longest)
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)

@@ -60,6 +60,8 @@ class Profile:
     loop_host_repeats: int = 1  # timed host runs after the first
     loop_batch: int | None = None  # eval.batch_size (None: the config's)
     loop_methods: tuple[str, ...] = ("oracle", "ragnav")
+    loop_refills: tuple[float, ...] = ()  # eval.refill shares the device runs are also timed at (replays; the
+    # config's is timed anyway)
 
     def replace(self, **kw) -> Profile:
         return dataclasses.replace(self, **kw)

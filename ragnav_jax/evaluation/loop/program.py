@@ -177,9 +177,11 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, *
     Returns the final State.
 
     Each iteration reflects on every lane whose leg ended (look-around, `step.after_leg`, the budget,
-    `step.next_leg`, waypoints) and starts its next leg, then drives (`advance`) until a share `refill` of
-    the legs going has ended: lanes do not wait for the batch's longest leg (1.0: every leg ends first). Each
-    episode's own sequence of legs and steps is the same whatever the share."""
+    `step.next_leg`, waypoints) and starts its next leg, then drives (`advance`) until refill * E legs have
+    ended, or all that are going where fewer are: lanes do not wait for the batch's longest leg (1.0: every
+    leg ends first). A reflection costs the whole batch however few lanes it serves, so the share is of the
+    batch, not of the legs going. Each episode's own sequence of legs and steps is the same whatever the
+    share."""
     N, O = world.pos.shape[1], world.known.shape[1]
     E = inp.b.shape[0]
     st = initial_state(inp, lam, world, fl, N, O)
@@ -218,7 +220,7 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, *
     def body(c):
         st, drv, arrived, going, pending = c
         st, drv, pending = reflect(st, drv, arrived, going, pending)
-        keep = jnp.floor((1.0 - refill) * jnp.sum(pending)).astype(jnp.int32)
+        keep = jnp.maximum(jnp.sum(pending) - jnp.ceil(refill * E).astype(jnp.int32), 0)
         drv, arrived, going = advance(scene_idx, drv, keep)
         return st, drv, arrived, going, pending
 
