@@ -157,3 +157,15 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment):
     assert sums["nav_success"][0].tolist() == want
     assert 0.0 <= sums["nav_spl"][0].sum() <= sums["nav_success"][0].sum() + 1e-6
     assert sums["nav_travel_m"][0].sum() == pytest.approx(sum(r["travel_distance_m"] for r in rows), rel=1e-3)
+
+
+def test_refill_changes_speed_not_rows(setup, apartment, both):
+    """eval.refill (lanes that ended a leg start the next while the others drive on) gives the same rows as
+    waiting for every leg of the batch, with the same compiled program."""
+    out, _ = both
+    progs = [v for k, v in setup[3].cache.items() if k[0] == "device_program"]
+    before = sum(p._cache_size() for p in progs)
+    rows, _ = _rows(setup, apartment, "ragnav", "device", refill=0.25)
+    keys = ("success", "goal_status", "steps", "travel_distance_m", "declarations")
+    assert [{k: r[k] for k in keys} for r in rows] == [{k: r[k] for k in keys} for r in out["device"]["ragnav"]]
+    assert sum(p._cache_size() for p in progs) == before  # refill is an argument, not a compile-time constant
