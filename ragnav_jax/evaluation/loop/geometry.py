@@ -438,22 +438,6 @@ def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bo
     return points.astype(jnp.float32), jnp.where(found, n, 2).astype(jnp.int32)
 
 
-UNROLL = 4  # iterations of a grid search's loop body per while_loop trip (fewer trips: each costs a launch)
-
-
-def _unrolled(body, more, k: int = UNROLL):
-    """A while_loop body doing up to k iterations of `body`, each only while more(state) (the same result as
-    one per trip, in about 1 / k of the trips)."""
-
-    def run(s):
-        for _ in range(k):
-            go = more(s)
-            s = jax.tree.map(lambda a, b, go=go: jnp.where(go, a, b), body(s), s)
-        return s
-
-    return run
-
-
 def _pack(m: jax.Array) -> jax.Array:
     """(..., H, W / 32) uint32: the bits of m (..., H, W) bool, cell j of a row at bit j % 32 of word j // 32."""
     bits = jnp.left_shift(jnp.uint32(1), jnp.arange(32, dtype=jnp.uint32))
@@ -503,8 +487,7 @@ def _search(oks: jax.Array, la, lc, run) -> tuple[jax.Array, jax.Array, jax.Arra
         return (jnp.where(stuck, t + 1, t), jnp.where(stuck, 0, it + 1), jnp.where(stuck, start, layers),
                 jnp.where(stuck, seed, new), found)
 
-    more = lambda s: ~s[4] & (s[0] < T)  # noqa: E731
-    t, it, layers, _, _ = lax.while_loop(lambda s: run & more(s), _unrolled(layer, more),
+    t, it, layers, _, _ = lax.while_loop(lambda s: run & ~s[4] & (s[0] < T), layer,
                                          (jnp.int32(0), jnp.int32(0), start, seed, jnp.bool_(False)))
     return jnp.where(run, t, T), it, layers
 
@@ -522,8 +505,7 @@ def _descend(layers: jax.Array, la, steps, cap: int, go) -> jax.Array:
         return k + 1, nxt, jnp.where(jnp.arange(cap)[:, None] > k, nxt[None], cells)
 
     cells = jnp.broadcast_to(la, (cap, 2))
-    return lax.while_loop(lambda s: go & (s[0] < steps), _unrolled(down, lambda s: s[0] < steps),
-                          (jnp.int32(0), la, cells))[2]
+    return lax.while_loop(lambda s: go & (s[0] < steps), down, (jnp.int32(0), la, cells))[2]
 
 
 def _string_pull(xy: jax.Array, steps, obs: dict, sight, max_points: int, reach: int, go):

@@ -16,7 +16,6 @@ import jax.numpy as jnp
 from ragnav_jax.evaluation.clearance import CLOSER_GAP_M, SAME_INSTANCE_M
 from ragnav_jax.evaluation.loop import geometry as geo
 from ragnav_jax.evaluation.loop.state import APPROACH, CLOSER, FAILED, FOUND, NAV, NONE, SEARCH, WRONG, Flags
-from ragnav_jax.memory.topomap import segment_clearance
 from ragnav_jax.planning.costs import order_problem
 from ragnav_jax.planning.order import SOLVERS, pick_solver
 
@@ -319,7 +318,7 @@ def leg_waypoints(st, inp, w, pose, fl: Flags):
         stop = approach_stop(st, inp, w, st.leg_target, pose, fl)
         direct = (jnp.zeros((L, 2), jnp.float32).at[0].set(here).at[1].set(stop), jnp.int32(2), jnp.zeros(L, bool),
                   jnp.full(L, -1, jnp.int32), jnp.asarray(False))
-        clear = inp.straight | (segment_clearance(here[None], stop[None], _obs(w, b), jnp)[0] >= fl.need)
+        clear = inp.straight | (geo.segment_clearance(here[None], stop[None], _obs(w, b))[0] >= fl.need)
         # round what is in the way on the grid; else over the map (`host_loop.Loop.approach_route`)
         ap, an = _local(w, b, here, stop, fl, True, (st.leg_kind == APPROACH) & ~clear)
         around = (jnp.zeros((L, 2), jnp.float32).at[: ap.shape[0]].set(ap), an, jnp.zeros(L, bool),
