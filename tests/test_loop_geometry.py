@@ -341,3 +341,24 @@ def test_edge_plans_refuses_plans_longer_than_k(setup):
     loop = setup[3]
     with pytest.raises(ValueError, match="points"):
         geo.edge_plans(loop, 0, 2)
+
+
+@settings(max_examples=40, deadline=None)
+@given(SEEDS)
+def test_join_plans_matches_numpy_concatenation(seed):
+    """Each valid segment's plan without its first point (or the segment's end where it has none), in order,
+    after the polyline's first point; zeros after the count."""
+    rng = np.random.default_rng(seed)
+    L, K = int(rng.choice([2, 6])), int(rng.choice([2, 5]))  # few shapes: few compilations
+    pts = rng.normal(size=(L, 2)).astype(np.float32)
+    plans = rng.normal(size=(L - 1, K, 2)).astype(np.float32)
+    cnt = rng.integers(1, K + 1, L - 1).astype(np.int32)
+    planned = rng.random(L - 1) < 0.6
+    n = int(rng.integers(0, L + 1))
+    want = [pts[0]]
+    for s in range(max(n - 1, 0)):
+        want += list(plans[s, 1 : cnt[s]]) if planned[s] else [pts[s + 1]]
+    out, m = jax.jit(geo.join_plans)(pts, n, plans, cnt, planned)
+    assert int(m) == (len(want) if n > 0 else 0)
+    np.testing.assert_array_equal(np.asarray(out[: len(want)]), np.stack(want))
+    assert not np.asarray(out[len(want):]).any()

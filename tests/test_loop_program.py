@@ -3,8 +3,11 @@ trace per batch shape, and the configured order planner changes what it drives."
 
 import dataclasses
 
+import jax
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from test_memory_streams import synthetic_stream
 
 from ragnav_jax.config import load_config
@@ -169,3 +172,28 @@ def test_refill_changes_speed_not_rows(setup, apartment, both):
     keys = ("success", "goal_status", "steps", "travel_distance_m", "declarations")
     assert [{k: r[k] for k in keys} for r in rows] == [{k: r[k] for k in keys} for r in out["device"]["ragnav"]]
     assert sum(p._cache_size() for p in progs) == before  # refill is an argument, not a compile-time constant
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(0, 2**31 - 1))
+def test_visit_sequence_follows_the_solved_slots_and_keeps_dead_goals_in_place(seed):
+    """The goals in the solver's slot order (NumPy), then each goal left without a candidate: at its written
+    place when strict, at the end when free."""
+    from ragnav_jax.evaluation.loop import step
+
+    rng = np.random.default_rng(seed)
+    G = 5
+    left = rng.random(G) < 0.8
+    live = left & (rng.random(G) < 0.8)
+    goal_of = np.flatnonzero(live)
+    n = len(goal_of)
+    k = np.full(G, -1)
+    k[:n] = rng.permutation(n)
+    strict = bool(rng.integers(2))
+    q = {"left": left, "live": live, "n_live": np.int32(n), "goal_of": np.pad(goal_of, (0, G - n)).astype(np.int32)}
+    seq, m = jax.jit(step.visit_sequence)(q, k.astype(np.int32), strict)
+    want = [int(goal_of[s]) for s in k[:n]] if n > 1 else list(goal_of)
+    for d in np.flatnonzero(left & ~live):
+        at = max([i + 1 for i, g in enumerate(want) if g < d], default=0) if strict else len(want)
+        want.insert(at, int(d))
+    assert int(m) == len(want) and np.asarray(seq)[: len(want)].tolist() == want

@@ -325,11 +325,13 @@ def join_plans(pts, n, plans, cnt, planned):
     k = jnp.arange(1, K)
     src = jnp.where(planned[:, None, None], plans[:, 1:],
                     jnp.where((k == 1)[None, :, None], pts[1:, None], 0.0))  # (L-1, K-1, 2)
-    keep = seg_valid[:, None] & (k[None, :] < cnt[:, None])
-    dst = jnp.where(keep, off[:, None] + k[None, :] - 1, L * K)
-    out = jnp.zeros((L * K, 2), jnp.float32).at[0].set(pts[0])
-    out = out.at[dst.reshape(-1)].set(src.reshape(-1, 2), mode="drop")
-    return out, jnp.where(n > 0, 1 + add.sum(), 0)
+    # Each output point gathers its segment's point (no scatter with dropped indices: under vmap on the GPU
+    # those misplaced points, see step.visit_sequence). Segments adding nothing share the next one's offset.
+    p = jnp.arange(L * K)
+    seg = jnp.clip(jnp.searchsorted(off, p, side="right") - 1, 0, L - 2)
+    out = src[seg, jnp.clip(p - off[seg], 0, K - 2)]
+    out = jnp.where((p == 0)[:, None], pts[0], jnp.where(((p >= 1) & (p < 1 + add.sum()))[:, None], out, 0.0))
+    return out.astype(jnp.float32), jnp.where(n > 0, 1 + add.sum(), 0)
 
 
 def densify_or_keys(way, m, pts, n, P: int):

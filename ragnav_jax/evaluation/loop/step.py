@@ -50,7 +50,7 @@ def _remove(st, g):
 def _left_mask(st):
     G = st.order.shape[0]
     live = jnp.arange(G) < st.n_left
-    return jnp.zeros(G, bool).at[jnp.where(live, st.order, G)].set(True, mode="drop")
+    return jnp.any((st.order[None, :] == jnp.arange(G)[:, None]) & live[None, :], axis=1)
 
 
 def current(st, inp, g, fl: Flags):
@@ -82,14 +82,12 @@ def search_next(st, inp, w, g, fl: Flags):
     return jnp.where(inp.searches & left.any(), nodes[k], -1)
 
 
-def replan(st, inp, w, lam, fl: Flags):
-    """Re-solves the order of the remaining goals from the robot's node with their current candidates
-    (`host_loop.Loop.replan`): the order planner over the goals that have one (strict instructions with the
-    order penalty `lam`), then each goal without one at its instruction place (free: at the end)."""
+def order_inputs(st, inp, w, lam, fl: Flags):
+    """The re-plan's order problem: the goals left that have a candidate ("live"), by index, as the solver's
+    targets 1..n_live after the robot's node 0, with their instruction ranks (strict) and lambda."""
     G = st.order.shape[0]
     ids = jnp.arange(G, dtype=jnp.int32)
     left = _left_mask(st)
-    written = jnp.argsort(jnp.where(left, ids, G + ids)).astype(jnp.int32)  # the instruction's order
     cur = jax.vmap(lambda g: current(st, inp, g, fl))(ids)
     live = left & (cur >= 0)
     n_live = live.sum().astype(jnp.int32)
@@ -103,13 +101,28 @@ def replan(st, inp, w, lam, fl: Flags):
     sub = jnp.where(valid[:, None] & valid[None, :], sub, _INF).astype(jnp.float32)
     targets = jnp.where(slot < n_live, slot + 1, -1).astype(jnp.int32)
     ranks = jnp.where((slot < n_live) & inp.strict, goal_of, 0).astype(jnp.int32)
+    return dict(left=left, live=live, n_live=n_live, goal_of=goal_of, sub=sub, targets=targets, ranks=ranks,
+                lam=jnp.where(inp.strict, lam, 0.0))
+
+
+def solve_order(q, fl: Flags):
+    """The order planner (`planning.order`, `planning.solver`) on `order_inputs`: (P,) slots in visiting order."""
+    P = q["goal_of"].shape[0]
     method = pick_solver(P) if fl.solver == "auto" else fl.solver
-    solver = SOLVERS[method]
     kw = {"max_iters": fl.search_iters} if method == "local_search" else {}
-    res = solver(order_problem(sub, jnp.int32(0), targets, rank=ranks), jnp.where(inp.strict, lam, 0.0), **kw)
-    k = res.order
-    pos = jnp.full(P, 3 * P, jnp.int32).at[jnp.where((k >= 0) & (k < n_live), k, P)].set(
-        jnp.arange(P, dtype=jnp.int32), mode="drop")
+    return SOLVERS[method](order_problem(q["sub"], jnp.int32(0), q["targets"], rank=q["ranks"]), q["lam"], **kw).order
+
+
+def visit_sequence(q, k, strict):
+    """(G,) goals in visiting order from the solved slots k, then the goals left without a candidate at their
+    instruction place (free: at the end); and the count of goals in it."""
+    G, P = q["left"].shape[0], q["goal_of"].shape[0]
+    ids, slot = jnp.arange(G, dtype=jnp.int32), jnp.arange(P)
+    n_live, goal_of, left, live = q["n_live"], q["goal_of"], q["left"], q["live"]
+    # pos[s]: where slot s is visited (3P: not in k). A comparison, not a scatter: XLA's GPU scatter with
+    # out-of-range (dropped) indices under vmap put goal 0 at the wrong place (H100, JAX 0.11.2).
+    hit = (k[None, :] == slot[:, None]) & (k[None, :] < n_live)
+    pos = jnp.min(jnp.where(hit, slot[None, :], 3 * P), axis=1).astype(jnp.int32)
     key = jnp.where(slot < n_live, jnp.where(pos < 3 * P, pos, P + slot), 3 * P + slot)
     key = jnp.where(n_live <= 1, slot, key)  # one goal: nothing to solve (host_loop.plan_order)
     seq = goal_of[jnp.argsort(key)][:G]
@@ -119,11 +132,21 @@ def replan(st, inp, w, lam, fl: Flags):
         seq, m = carry
         dead = left[d] & ~live[d]
         before = (ids < m) & (seq < d)
-        at = jnp.where(inp.strict, jnp.max(jnp.where(before, ids + 1, 0)), m)
+        at = jnp.where(strict, jnp.max(jnp.where(before, ids + 1, 0)), m)
         new = jnp.where(ids < at, seq, jnp.where(ids == at, d, seq[jnp.maximum(ids - 1, 0)]))
         return jnp.where(dead, new, seq), m + dead.astype(jnp.int32)
 
-    seq, m = jax.lax.fori_loop(0, G, insert, (seq.astype(jnp.int32), n_live))
+    return jax.lax.fori_loop(0, G, insert, (seq.astype(jnp.int32), n_live))
+
+
+def replan(st, inp, w, lam, fl: Flags):
+    """Re-solves the order of the remaining goals from the robot's node with their current candidates
+    (`host_loop.Loop.replan`): the order planner over the goals that have one (strict instructions with the
+    order penalty `lam`), then each goal without one at its instruction place (free: at the end)."""
+    q = order_inputs(st, inp, w, lam, fl)
+    seq, m = visit_sequence(q, solve_order(q, fl), inp.strict)
+    ids = jnp.arange(seq.shape[0], dtype=jnp.int32)
+    written = jnp.argsort(jnp.where(q["left"], ids, seq.shape[0] + ids)).astype(jnp.int32)  # the instruction's order
     return st.replace(order=jnp.where(inp.optimal_order, seq, written), n_left=jnp.where(inp.optimal_order, m, st.n_left))
 
 
@@ -415,8 +438,7 @@ def after_leg(st, inp, w, pose, arrived, visible, lam, fl: Flags):
         def declare(st):
             j = _true_goal_at(st, inp, w, o, pose, fl)
             k = st.n_decl
-            T = st.found.shape[0]
-            st = st.replace(found=st.found.at[jnp.where(j >= 0, j, T)].set(True, mode="drop"),
+            st = st.replace(found=st.found | (jnp.arange(st.found.shape[0]) == j),
                             decl_goal=st.decl_goal.at[k].set(g), decl_truth=st.decl_truth.at[k].set(j),
                             decl_obj=st.decl_obj.at[k].set(o), decl_step=st.decl_step.at[k].set(st.steps + st.look_steps),
                             decl_xy=st.decl_xy.at[k].set(pose[:2]), decl_fallback=st.decl_fallback.at[k].set(st.fell_back[g]),
