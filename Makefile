@@ -43,7 +43,7 @@ demo: install
 # Two pytest-xdist workers (CI has 2 cores), each test file on one worker so its module fixtures are built
 # once: 9 min instead of 14.5 on the 2-core CPU.
 test: install
-	$(PY) -m pytest -q -n 2 --dist loadfile tests
+	$(PY) -m pytest -q -n 2 --dist loadfile --durations=15 tests
 
 # Benchmark suite with peer comparisons (README, Performance): BENCH_ARGS=--quick for the 2-minute variant.
 bench: install

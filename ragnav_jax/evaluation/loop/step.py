@@ -278,13 +278,16 @@ def _drive_points(pts, n, is_node, nodes, raw, w, b, fl: Flags):
     K = w.plans.shape[2]
     last = jnp.maximum(n - 2, 0)
     use = jnp.stack([(n >= 2) & ~(is_node[0] & is_node[1]), (n >= 2) & ~(is_node[last] & is_node[last + 1])])
-    p0, n0 = _local(w, b, pts[0], pts[1], fl, False, use[0] & ~raw)
-    p1, n1 = _local(w, b, pts[last], pts[last + 1], fl, False, use[1] & ~raw)
-    pad = lambda p: jnp.concatenate([p, jnp.repeat(p[-1:], K - p.shape[0], 0)])  # noqa: E731
-    way, m = _splice(pts, n, is_node, nodes, (jnp.stack([pad(p0), pad(p1)]), jnp.stack([n0, n1]), use), w, b)
     route = pts[:ROUTE_POINTS]  # (the caller's buffer holds at least ROUTE_POINTS)
     seg = raw & (jnp.arange(ROUTE_POINTS - 1) < n - 1)
-    plans, cnt = jax.vmap(lambda a, c, go: _local(w, b, a, c, fl, False, go))(route[:-1], route[1:], seg)
+    # one grid search for the leg's two end segments and the route's segments (traced and compiled once)
+    a = jnp.concatenate([pts[jnp.stack([0, last])], route[:-1]])
+    c = jnp.concatenate([pts[jnp.stack([1, last + 1])], route[1:]])
+    go = jnp.concatenate([use & ~raw, seg])
+    local, count = jax.vmap(lambda a, c, go: _local(w, b, a, c, fl, False, go))(a, c, go)
+    pad = lambda p: jnp.concatenate([p, jnp.repeat(p[:, -1:], K - p.shape[1], 1)], axis=1)  # noqa: E731
+    way, m = _splice(pts, n, is_node, nodes, (pad(local[:2]), count[:2], use), w, b)
+    plans, cnt = local[2:], count[2:]
     rway, rm = geo.join_plans(route, jnp.minimum(n, ROUTE_POINTS), plans, cnt, jnp.ones(ROUTE_POINTS - 1, bool))
     dp, dn = geo.densify_or_keys(way, m, pts, n, fl.path_points)
     rp, rn = geo.densify_or_keys(rway, rm, route, jnp.minimum(n, ROUTE_POINTS), fl.path_points)
