@@ -45,6 +45,17 @@ def pytest_configure(config):
     jax.config.update("jax_persistent_cache_min_compile_time_secs", _MIN_COMPILE_S)
 
 
+# Files whose module fixtures compile the simulator or the device program: run first, so that the two
+# workers (`--dist loadfile` hands out files in collection order) end on short files instead of one of these.
+HEAVY_FIRST = ("test_loop_program.py", "test_bench.py", "test_eval.py", "test_show_episode.py", "test_notebooks.py",
+               "test_explore.py", "test_tagger.py", "test_sim.py", "test_search.py")
+
+
+def pytest_collection_modifyitems(config, items):
+    rank = {name: i for i, name in enumerate(HEAVY_FIRST)}
+    items.sort(key=lambda item: rank.get(item.path.name, len(rank)))  # stable: each file keeps its own order
+
+
 def pytest_unconfigure(config):
     folder = getattr(config, "_ragnav_cache", None)
     if folder:
