@@ -242,6 +242,15 @@ def _pad(x, E: int):
     return jax.tree.map(lambda a: jnp.concatenate([a, jnp.repeat(a[:1], E - a.shape[0], 0)]) if a.shape[0] < E else a, x)
 
 
+def batch_sizes(states: list, cfg: Config) -> tuple[int, int, int, int]:
+    """(G goals, C candidates, S search nodes, T true goals) of `inputs_of`: from the episodes and the config
+    alone (not the method), so every method shares one compilation."""
+    T = max(len(st.ep.goals) for st in states)
+    G = max(T, max(len(st.status) for st in states), 1)
+    C = max([cfg.eval.candidates] + [len(c) for st in states for c in st.cands])
+    return G, C, max(1, cfg.eval.search_nodes), T
+
+
 def run_device(loop, states: list, cfg: Config, progress=None) -> None:
     """Runs `states` (host EpisodeStates, before any leg) on the device program and writes the outcome back
     into them (status, found, declarations, steps, travel, the first plan)."""
@@ -251,11 +260,7 @@ def run_device(loop, states: list, cfg: Config, progress=None) -> None:
         raise UserError("the device loop does not run the etpnav baseline (eval.engine=host runs it)")
     if not states:
         return
-    # sizes from the episodes and the config alone (not the method), so every method shares one compilation
-    T = max(len(st.ep.goals) for st in states)
-    G = max(T, max(len(st.status) for st in states), 1)
-    C = max([cfg.eval.candidates] + [len(c) for st in states for c in st.cands])
-    S = max(1, cfg.eval.search_nodes)
+    G, C, S, T = batch_sizes(states, cfg)
     fl = flags_of(cfg, loop.look_cost)
     world = world_of(loop)
     prog = compiled(loop.ex, fl)
