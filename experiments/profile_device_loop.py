@@ -2,14 +2,15 @@
 at one batch size, next to the whole program.
 
     python experiments/profile_device_loop.py --out DIR [--scenes 4] [--distinct 128] [--batch 16384] \
-        [--method oracle] [--steps 100]
+        [--method oracle] [--steps 100] [--lanes 4096,8192] [--no-phases]
 
 The paper preset's first --scenes scenes are generated, explored and given a memory (hashing embedder), the
 method's evaluate_navigation runs on --distinct episodes with eval.engine=device, and the states it hands to
 `loop.program.run_device` are tiled to --batch. Then, each jitted alone on that batch (median of 3 after a
 first, compiling call): the initial plan, `step.next_leg`, `step.leg_waypoints`, the look-around, `step.after_leg`
 (all vmapped, from the start pose), --steps control steps of driving (`Executor.advance`), and the whole
-`closed_loop` at eval.refill 1.0. Writes DIR/profile.json; absolute times only mean something on a GPU.
+`closed_loop` at eval.refill 1.0 (all --batch episodes at once, then queued on each of --lanes). Writes
+DIR/profile.json; absolute times only mean something on a GPU.
 """
 
 from __future__ import annotations
@@ -60,6 +61,9 @@ def main(argv=None) -> int:
     ap.add_argument("--batch", type=int, default=16384)
     ap.add_argument("--method", default="oracle")
     ap.add_argument("--steps", type=int, default=100)
+    ap.add_argument("--lanes", default="", help="comma-separated lane counts: the whole closed_loop is also timed "
+                    "with the --batch episodes queued on each (eval.batch_size)")
+    ap.add_argument("--no-phases", action="store_true", help="time only the whole closed_loop")
     a = ap.parse_args(argv)
     p = PROFILES["quick"].replace(e2e_explore_steps=None, e2e_explore_batch=None)
     base = paper_config(p, a.scenes)
@@ -98,32 +102,45 @@ def main(argv=None) -> int:
     N, O = world.pos.shape[1], world.known.shape[1]
     in_ep = (0, 0, None, 0, 0)
     res = {}
-    res["init"] = timed(jax.jit(lambda i, s: ex.init(i, s)), sidx, start)
-    d = res["init"]["out"]
-    pose = d.qpos[:, :3]
-    res["initial_plan"] = timed(jax.jit(lambda inp, lam: program.initial_state(inp, lam, world, fl, N, O)), inp, lam)
-    st0 = res["initial_plan"]["out"]
-    res["next_leg"] = timed(jax.jit(lambda s, p: jax.vmap(
-        lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(s, inp, world, p, lam)), st0, pose)
-    st1 = res["next_leg"]["out"]
-    res["leg_waypoints"] = timed(jax.jit(lambda s, p: jax.vmap(
-        lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(s, inp, world, p)), st1, pose)
-    pts, n = res["leg_waypoints"]["out"]
-    res["look"] = timed(jax.jit(lambda d: ex.look_fn(sidx, d)), d)
-    visible = res["look"]["out"][0]
-    res["after_leg"] = timed(jax.jit(lambda s, p, v: jax.vmap(
-        lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl), in_axes=(0, 0, None, 0, 0, 0, 0))(
-        s, inp, world, p, jnp.ones(E, bool), v, lam)), st1, pose, visible)
-    allow = jnp.full(E, a.steps, jnp.int32)
-    res[f"drive_{a.steps}_steps"] = timed(jax.jit(lambda d: ex.advance(sidx, Driving.start(d, pts, n, allow), 0)), d)
-    prog = jax.jit(functools.partial(program.closed_loop, fl=fl, init=ex.init, advance=ex.advance, look=ex.look_fn))
-    res["closed_loop_refill_1"] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
-    final = res["closed_loop_refill_1"]["out"]
-    drove = np.asarray(res[f"drive_{a.steps}_steps"]["out"][0].steps)
+    phases = {}
+    if not a.no_phases:
+        res["init"] = timed(jax.jit(lambda i, s: ex.init(i, s)), sidx, start)
+        d = res["init"]["out"]
+        pose = d.qpos[:, :3]
+        res["initial_plan"] = timed(jax.jit(lambda inp, lam: program.initial_state(inp, lam, world, fl, N, O)), inp,
+                                    lam)
+        st0 = res["initial_plan"]["out"]
+        res["next_leg"] = timed(jax.jit(lambda s, p: jax.vmap(
+            lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(s, inp, world, p, lam)), st0, pose)
+        st1 = res["next_leg"]["out"]
+        res["leg_waypoints"] = timed(jax.jit(lambda s, p: jax.vmap(
+            lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(s, inp, world, p)), st1, pose)
+        pts, n = res["leg_waypoints"]["out"]
+        res["look"] = timed(jax.jit(lambda d: ex.look_fn(sidx, d)), d)
+        visible = res["look"]["out"][0]
+        res["after_leg"] = timed(jax.jit(lambda s, p, v: jax.vmap(
+            lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl), in_axes=(0, 0, None, 0, 0, 0, 0))(
+            s, inp, world, p, jnp.ones(E, bool), v, lam)), st1, pose, visible)
+        allow = jnp.full(E, a.steps, jnp.int32)
+        res[f"drive_{a.steps}_steps"] = timed(jax.jit(lambda d: ex.advance(sidx, Driving.start(d, pts, n, allow), 0)),
+                                              d)
+        phases["drive_steps_taken_mean"] = float(np.asarray(res[f"drive_{a.steps}_steps"]["out"][0].steps).mean())
+    final = None
+    for lanes in [None] + [int(x) for x in a.lanes.split(",") if x]:
+        prog = jax.jit(functools.partial(program.closed_loop, fl=fl, init=ex.init, advance=ex.advance,
+                                         look=ex.look_fn, lanes=lanes))
+        key = "closed_loop_refill_1" + ("" if lanes is None else f"_lanes_{lanes}")
+        res[key] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
+        same = None if final is None else all(bool(np.array_equal(x, y)) for x, y in zip(
+            jax.tree.leaves(final), jax.tree.leaves(res[key]["out"])))
+        final = res[key]["out"] if final is None else final
+        print(key, {k: round(v, 3) for k, v in res[key].items() if k != "out"}, "same State:", same, flush=True)
+        if same is not None:
+            phases[key + "_same_state"] = same
     out = {"device": str(jax.devices()[0].device_kind), "method": a.method, "batch": E, "distinct": len(distinct),
            "scenes": a.scenes, "host": host,
            "phases": {k: {"median_s": v["median_s"], "compile_s": v["compile_s"]} for k, v in res.items()},
-           "drive_steps_taken_mean": float(drove.mean()),
+           **phases,
            "legs_max": int(np.asarray(final.legs).max()), "legs_mean": float(np.asarray(final.legs).mean()),
            "steps_mean": float(np.asarray(final.steps).mean()),
            "look_steps_mean": float(np.asarray(final.look_steps).mean())}

@@ -526,7 +526,8 @@ class EvalConfig:
     path_points: int = 128  # static waypoint buffer per leg
     strict_lam: float = 1.0e4  # order penalty of the shortest route SPL measures a strict episode against (metres
     # per order inversion; the loop itself keeps a strict instruction's order)
-    batch_size: int = 512  # episodes executed together in one vmapped call
+    batch_size: int = 512  # episodes executed together in one vmapped call (device engine: lanes; an episode that
+    # ends hands its lane to the next one queued, so lanes do not wait for the batch's longest episode)
     engine: str = "host"  # "device": the whole closed loop as one jitted program (evaluation/loop/; not etpnav,
     # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/host_loop.py
     refill: float = 1.0  # device engine: share of the batch whose legs end before the loop reflects on them and

@@ -29,7 +29,7 @@ def _with(cfg, **kw):
 
 @pytest.fixture(scope="module")
 def setup(apartment):
-    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])  # 6 episodes: two batches
+    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])  # 6 episodes on 4 lanes: 2 queue
     stream = synthetic_stream(apartment)
     emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
     bank, _ = build_bank([apartment], [stream], cfg, embedder=emb)
@@ -106,7 +106,7 @@ def test_order_penalty_reaches_the_device_loop(setup, apartment):
     cfg, bank, emb, ex, ver = setup
     goals = _longest_written_order(bank, apartment)
     ep = Episode("lam-0", apartment.name, "visit them in order", tuple(goals), "text", "strict")
-    episodes = [ep, *load_episodes(EPISODES, [apartment])[:3]]  # the module's batch shape: no new compilation
+    episodes = [ep, *load_episodes(EPISODES, [apartment])[:5]]  # the module's queue shape: no new compilation
     out = {}
     for lam in (0.0, 1.0e4):
         c = dataclasses.replace(cfg, planning=dataclasses.replace(cfg.planning, lam=lam))
@@ -172,6 +172,19 @@ def test_refill_changes_speed_not_rows(setup, apartment, both):
     keys = ("success", "goal_status", "steps", "travel_distance_m", "declarations")
     assert [{k: r[k] for k in keys} for r in rows] == [{k: r[k] for k in keys} for r in out["device"]["ragnav"]]
     assert sum(p._cache_size() for p in progs) == before  # refill is an argument, not a compile-time constant
+
+
+def test_an_episode_does_not_depend_on_its_lane_or_queue_place(setup, apartment, both):
+    """4 lanes, 6 episodes: two wait in the queue for a lane. In reverse order the first ones wait instead, and
+    every episode's row is the same, from the same compiled program."""
+    out, _ = both
+    progs = [v for k, v in setup[3].cache.items() if k[0] == "device_program"]
+    before = sum(p._cache_size() for p in progs)
+    episodes = load_episodes(EPISODES, [apartment])
+    rows, _ = _rows(setup, apartment, "ragnav", "device", episodes[::-1])
+    keys = ("episode", "success", "goal_status", "steps", "travel_distance_m", "declarations")
+    assert [{k: r[k] for k in keys} for r in rows[::-1]] == [{k: r[k] for k in keys} for r in out["device"]["ragnav"]]
+    assert sum(p._cache_size() for p in progs) == before
 
 
 @settings(max_examples=30, deadline=None)

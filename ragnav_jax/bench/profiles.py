@@ -62,6 +62,8 @@ class Profile:
     loop_methods: tuple[str, ...] = ("oracle", "ragnav")
     loop_refills: tuple[float, ...] = ()  # eval.refill shares the device runs are also timed at (replays; the
     # config's is timed anyway)
+    loop_lanes: tuple[int, ...] = ()  # eval.batch_size lanes the device runs are also timed at (replays: the same
+    # episodes queued on fewer lanes; loop_batch is timed anyway)
 
     def replace(self, **kw) -> Profile:
         return dataclasses.replace(self, **kw)

@@ -478,11 +478,11 @@ def _captured_loop(calls: list):
             setattr(mod, name, fn)
 
 
-def _replay(calls: list, n: int, traces: dict, refill: float | None = None) -> tuple[dict, list]:
+def _replay(calls: list, n: int, traces: dict, **ev) -> tuple[dict, list]:
     """Runs the captured loop calls again on fresh copies of their starting states; where n is more than they
     held, the states of the single captured call tiled to n (each copy its own object). Returns the
-    stage_clock record (copying not timed) and the final states, in order. refill: eval.refill of the device
-    loop's calls (run_device(loop, states, cfg)) instead of the captured config's."""
+    stage_clock record (copying not timed) and the final states, in order. ev: eval settings (refill,
+    batch_size) of the device loop's calls (run_device(loop, states, cfg)) instead of the captured config's."""
     held = sum(len(c["before"]) for c in calls)
     if n > held:
         if len(calls) != 1:
@@ -496,9 +496,9 @@ def _replay(calls: list, n: int, traces: dict, refill: float | None = None) -> t
     with stage_clock(rec):
         for c, states in jobs:
             rest = c["rest"]
-            if refill is not None:
+            if ev:
                 cfg = rest[0]
-                rest = (dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, refill=refill)), *rest[1:])
+                rest = (dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, **ev)), *rest[1:])
             c["fn"](c["loop"], states, *rest, **c["kw"])
     rec["traces"] = sum(traces.values()) - before
     return rec, [st for _, states in jobs for st in states]
@@ -513,7 +513,7 @@ def _outcome_row(row: dict) -> tuple:
 
 
 def engine_runs(run: Callable[[], tuple], n: int, repeats: int, traces: dict,
-                refills: Sequence[float] = ()) -> tuple[dict, list[dict]]:
+                refills: Sequence[float] = (), lanes: Sequence[int] = ()) -> tuple[dict, list[dict]]:
     """One engine's figures: run() (an evaluate_navigation call -> (rows, summary)) once with its loop captured,
     then the loop alone again on copies of the captured states (tiled to n episodes where n is more than run()
     evaluated), `repeats` times after the first timed run. The first timed run is the evaluate call's loop where
@@ -545,20 +545,25 @@ def engine_runs(run: Callable[[], tuple], n: int, repeats: int, traces: dict,
         same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(last)]
     warm = stats([r["wall_s"] for r in runs[1:] or runs])
     m = runs[0]["episodes"]
-    by_refill = {}
-    for r in refills:  # the same states again at other refill shares (one compilation: refill is an argument)
-        times = []
-        for _ in range(max(repeats, 1)):
-            rec, fin = _replay(calls, max(n, d), traces, refill=r)
-            times.append(rec["wall_s"])
-            same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(fin)]
-        by_refill[str(r)] = {"warm": stats(times), "episodes_per_s": m / stats(times)["median_s"]}
+    variants = {"refills": [("refill", r) for r in refills], "lanes": [("batch_size", b) for b in lanes]}
+    by = {}
+    for group, settings in variants.items():  # the same states again with other eval settings
+        by[group] = {}
+        for key, v in settings:
+            times = []  # a lane count is a new compilation: its first replay is timed apart
+            for _ in range(max(repeats, 1) + (group == "lanes")):
+                rec, fin = _replay(calls, max(n, d), traces, **{key: v})
+                times.append(rec["wall_s"])
+                same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(fin)]
+            w = stats(times[group == "lanes":])
+            by[group][str(v)] = {"warm": w, "episodes_per_s": m / w["median_s"],
+                                 **({"compile_s": max(times[0] - w["median_s"], 0.0)} if group == "lanes" else {})}
     return {"episodes": m, "distinct_episodes": d, "tiled": tiled, "evaluate_call": ev, "runs": runs, "warm": warm,
             "episodes_per_s": m / warm["median_s"], "episodes_per_s_range": [m / warm["max_s"], m / warm["min_s"]],
             "compile_s": max(runs[0]["wall_s"] - warm["median_s"], 0.0), "jax_compile_s_first": runs[0]["compile_s"],
             "compilations": ev["traces"] + sum(r["traces"] for r in runs if r["source"] == "replay"),
             "compilations_after_first": sum(r["traces"] for r in runs[1:]),
-            "replay_agreement": float(np.mean(same)) if same else None, "refills": by_refill,
+            "replay_agreement": float(np.mean(same)) if same else None, **by,
             "steps_per_episode": float(np.mean([st.steps + st.look_steps for st in last]))}, rows
 
 
@@ -606,7 +611,8 @@ def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
     for method in p.loop_methods:
         host, host_rows = engine_runs(runner(method, "host"), len(distinct), p.loop_host_repeats, executor.traces)
         _partial(res)
-        dev, dev_rows = engine_runs(runner(method, "device"), n, p.loop_repeats, executor.traces, p.loop_refills)
+        dev, dev_rows = engine_runs(runner(method, "device"), n, p.loop_repeats, executor.traces, p.loop_refills,
+                                     p.loop_lanes)
         dev["refill"] = base.eval.refill
         same = [_outcome_row(h) == _outcome_row(d) for h, d in zip(host_rows, dev_rows)]
         rec = {"host": host, "device": dev, "agreement": float(np.mean(same)), "agreement_episodes": len(same),
@@ -642,7 +648,7 @@ def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
            "for throughput at a large batch); the host engine runs the distinct ones. " if n > len(distinct) else "")
         + "episodes_per_s: episodes / median seconds of the runs after the first; compile_s = first run - that "
         "median (the first run: the evaluate call's loop or, tiled, the first replay, which compiles for its batch "
-        "once more); refills: the same replays at other eval.refill shares. compilations: traces of the executor's jitted init, run and look (the device program traces "
+        "once more); refills, lanes: the same replays at other eval.refill shares and eval.batch_size lane counts (a lane count compiles once, in a first replay timed apart: compile_s). compilations: traces of the executor's jitted init, run and look (the device program traces "
         "run and look once each). agreement: "
         "share of distinct episodes with the same success and goal_status on both engines; replay_agreement: the "
         "same status and found on every replay as in the evaluate call. env_steps_per_s: experiments/bench_sim.py "
@@ -670,13 +676,16 @@ def closed_loop_markdown(sec: dict) -> list[str]:
                  f"{d['episodes_per_s'] / h['episodes_per_s']:.2f}x | {d['compile_s']:.1f} | {h['compilations']} / "
                  f"{d['compilations']} | {r.get('steps_per_episode', nan):.0f} | "
                  f"{r.get('episodes_per_s_bound') or nan:.2f} | {r['agreement']:.2f} |")
-    refills = [(m, r["device"]) for m, r in sec["methods"].items() if r["device"].get("refills")]
-    if refills:
-        L += ["", "Device ep/s by eval.refill (the share of legs that end before the loop reflects; rows do not "
-              "depend on it):", "", "| method | " + " | ".join(f"refill {k}" for k in refills[0][1]["refills"]) +
-              f" | refill {refills[0][1].get('refill')} (config) |", "|---|" + "---:|" * (len(refills[0][1]["refills"]) + 1)]
-        for m, d in refills:
-            L.append(f"| {m} | " + " | ".join(f"{v['episodes_per_s']:.2f}" for v in d["refills"].values()) +
+    for group, what, conf in (("refills", "refill", "refill"), ("lanes", "lanes", "batch_size")):
+        rows = [(m, r["device"]) for m, r in sec["methods"].items() if r["device"].get(group)]
+        if not rows:
+            continue
+        keys = list(rows[0][1][group])
+        L += ["", f"Device ep/s by {'eval.refill (the share of legs that end before the loop reflects)' if group == 'refills' else 'eval.batch_size lanes (episodes run at once; the others queue)'}; rows do not depend on it:", "",
+              "| method | " + " | ".join(f"{what} {k}" for k in keys) + f" | {what} {rows[0][1].get(conf, sec.get('batch_size'))} (run above) |",
+              "|---|" + "---:|" * (len(keys) + 1)]
+        for m, d in rows:
+            L.append(f"| {m} | " + " | ".join(f"{v['episodes_per_s']:.2f}" for v in d[group].values()) +
                      f" | {d['episodes_per_s']:.2f} |")
     return L + ["", sec.get("note", ""), ""]
 

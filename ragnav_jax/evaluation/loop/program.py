@@ -170,35 +170,65 @@ def _select(mask, a, b):
     return jax.tree.map(lambda x, y: jnp.where(mask.reshape(mask.shape + (1,) * (x.ndim - 1)), x, y), a, b)
 
 
-def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, *, fl: Flags, init, advance,
-                look) -> State:
-    """Runs every episode of the batch to its end. scene_idx (E,) executor scene of each episode; start_pose
-    (E, 3); lam (E,) order penalty of each (a sweep's grid points are episodes too); refill () eval.refill.
-    Returns the final State.
+def _take(tree, idx):
+    return jax.tree.map(lambda x: x[idx], tree)
 
-    Each iteration reflects on every lane whose leg ended (look-around, `step.after_leg`, the budget,
-    `step.next_leg`, waypoints) and starts its next leg, then drives (`advance`) until refill * E legs have
-    ended, or all that are going where fewer are: lanes do not wait for the batch's longest leg (1.0: every
-    leg ends first). A reflection costs the whole batch however few lanes it serves, so the share is of the
-    batch, not of the legs going. Each episode's own sequence of legs and steps is the same whatever the
-    share."""
+
+def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, count=None, *, fl: Flags, init,
+                advance, look, lanes: int | None = None) -> State:
+    """Runs every episode of a queue to its end on `lanes` lanes. inp, scene_idx (Q,) executor scene, start_pose
+    (Q, 3) and lam (Q,) order penalty (a sweep's grid points are episodes too) have the queue's leading axis Q;
+    refill () eval.refill; count () episodes of the queue to run (the rest is padding; default Q); lanes
+    (static) episodes run at once (default Q). Returns the final State of every queued episode (Q leading).
+
+    Each iteration reflects on every lane whose leg ended (look-around, `step.after_leg`, the budget), hands
+    each lane whose episode ended the next episode of the queue (its first plan and MJX state), gives every
+    free lane its next leg (`step.next_leg`, waypoints), then drives (`advance`) until refill * lanes legs
+    have ended, or all that are going where fewer are: lanes do not wait for the batch's longest leg (1.0:
+    every leg ends first), nor for its longest episode while the queue lasts. A reflection costs every lane
+    however few it serves, so the share is of the lanes, not of the legs going. An episode's legs and steps
+    do not depend on its lane, on when it was loaded or on the share."""
     N, O = world.pos.shape[1], world.known.shape[1]
-    E = inp.b.shape[0]
-    st = initial_state(inp, lam, world, fl, N, O)
-    d = init(scene_idx, start_pose)
+    Q = inp.b.shape[0]
+    L = Q if lanes is None else min(lanes, Q)
+    count = jnp.int32(Q) if count is None else jnp.asarray(count, jnp.int32)
+    first = initial_state(inp, lam, world, fl, N, O)  # (Q) every queued episode's first plan
+    ep = jnp.arange(L, dtype=jnp.int32)  # each lane's episode
+    lane = jnp.arange(L, dtype=jnp.int32)
+    st = _take(first, ep)
+    st = st.replace(done=st.done | (ep >= count))
+    d = init(scene_idx[:L], start_pose[:L])
     P = fl.path_points
-    drv = Driving.start(d, jnp.zeros((E, P, 2), jnp.float32), jnp.zeros(E, jnp.int32), jnp.zeros(E, jnp.int32))
+    drv = Driving.start(d, jnp.zeros((L, P, 2), jnp.float32), jnp.zeros(L, jnp.int32), jnp.zeros(L, jnp.int32))
+    out = jax.tree.map(lambda x: jnp.zeros((Q + L, *x.shape[1:]), x.dtype), st)  # row Q + lane: a lane's scratch
     in_ep = (0, 0, None, 0, 0)
 
-    def reflect(st, drv, arrived, going, pending):
-        """Lanes not driving: the end of their leg (`pending`), then their next leg. Returns (st, drv, pending)."""
+    def write(out, st, ep):
+        """Every ended episode's state into its queue row (each lane writes a row of its own: no collisions)."""
+        row = jnp.where(st.done, ep, Q + lane)
+        return jax.tree.map(lambda o, x: o.at[row].set(x, unique_indices=True), out, st)
+
+    def load(args):
+        """Lanes whose episode ended take the next ones of the queue, in lane order."""
+        st, drv, ep, nxt = args
+        new = nxt + jnp.cumsum(st.done) - 1
+        take = st.done & (new < count)
+        ep = jnp.where(take, new, ep)
+        st = _select(take, _take(first, ep), st)
+        drv = drv.replace(d=_select(take, init(scene_idx[ep], start_pose[ep]), drv.d))
+        return st, drv, ep, nxt + jnp.sum(take)
+
+    def reflect(st, drv, arrived, going, pending, ep, nxt, out):
+        """Lanes not driving: the end of their leg (`pending`), a new episode where theirs ended, then their next
+        leg. Returns (st, drv, pending, ep, nxt, out)."""
+        li, sidx, lm = _take(inp, ep), scene_idx[ep], lam[ep]
         pose = drv.d.qpos[:, :3]
-        visible, _ = look(scene_idx, drv.d)
+        visible, _ = look(sidx, drv.d)
         ended = pending & ~going
         st = _select(ended, st.replace(steps=st.steps + drv.steps, length=st.length + drv.length,
                                        penetration=jnp.maximum(st.penetration, drv.pen), legs=st.legs + 1), st)
         after = jax.vmap(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
-                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, inp, world, pose, arrived, visible, lam)
+                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, li, world, pose, arrived, visible, lm)
         st = _select(ended, after, st)
         free = ~going & ~st.done
         over = free & (st.steps + st.look_steps >= fl.max_steps)
@@ -206,34 +236,42 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, *
         st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
                         status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
                         leg_kind=jnp.where(over, NONE, st.leg_kind))
-        nxt = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, inp, world, pose, lam)
-        st = _select(free, nxt, st)
+        out = write(out, st, ep)
+        st, drv, ep, nxt = jax.lax.cond(jnp.any(st.done) & (nxt < count), load, lambda a: a, (st, drv, ep, nxt))
+        li, lm = _take(inp, ep), lam[ep]
+        pose = drv.d.qpos[:, :3]
+        free = ~going & ~st.done
+        nxt_leg = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, li, world, pose, lm)
+        st = _select(free, nxt_leg, st)
         start = free & ~st.done & (st.leg_kind != NONE)
-        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, inp, world, pose)
+        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, li, world, pose)
         allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
         new = Driving.start(drv.d, pts, jnp.where(start, n, 0), jnp.where(start, allow, 0).astype(jnp.int32))
-        return st, _select(start, new, drv), start | (pending & going)
+        return st, _select(start, new, drv), start | (pending & going), ep, nxt, out
 
     def cond(c):
-        return jnp.any(~c[0].done)
+        return jnp.any(~c[0].done) | (c[6] < count)
 
     def body(c):
-        st, drv, arrived, going, pending = c
-        st, drv, pending = reflect(st, drv, arrived, going, pending)
-        keep = jnp.maximum(jnp.sum(pending) - jnp.ceil(refill * E).astype(jnp.int32), 0)
-        drv, arrived, going = advance(scene_idx, drv, keep)
-        return st, drv, arrived, going, pending
+        st, drv, arrived, going, pending, ep, nxt, out = c
+        st, drv, pending, ep, nxt, out = reflect(st, drv, arrived, going, pending, ep, nxt, out)
+        keep = jnp.maximum(jnp.sum(pending) - jnp.ceil(refill * L).astype(jnp.int32), 0)
+        drv, arrived, going = advance(scene_idx[ep], drv, keep)
+        return st, drv, arrived, going, pending, ep, nxt, out
 
-    st, *_ = jax.lax.while_loop(cond, body, (st, drv, jnp.ones(E, bool), jnp.zeros(E, bool), jnp.zeros(E, bool)))
-    return st
+    z = jnp.zeros(L, bool)
+    c = (st, drv, jnp.ones(L, bool), z, z, ep, jnp.minimum(jnp.int32(L), count), out)
+    st, _, _, _, _, ep, _, out = jax.lax.while_loop(cond, body, c)
+    return jax.tree.map(lambda x: x[:Q], write(out, st, ep))
 
 
-def compiled(ex, fl: Flags):
-    """The jitted program of an executor and flags (one trace per padded batch shape), kept on the executor."""
-    key = ("device_program", fl)
+def compiled(ex, fl: Flags, lanes: int | None = None):
+    """The jitted program of an executor, flags and lane count (one trace per queue shape), kept on the
+    executor."""
+    key = ("device_program", fl, lanes)
     if key not in ex.cache:
         ex.cache[key] = jax.jit(functools.partial(closed_loop, fl=fl, init=ex.init, advance=ex.advance,
-                                                  look=ex.look_fn))
+                                                  look=ex.look_fn, lanes=lanes))
     return ex.cache[key]
 
 
@@ -251,9 +289,14 @@ def batch_sizes(states: list, cfg: Config) -> tuple[int, int, int, int]:
     return G, C, max(1, cfg.eval.search_nodes), T
 
 
+QUEUE_BATCHES = 8  # a device call queues up to this many batches of episodes on its eval.batch_size lanes
+
+
 def run_device(loop, states: list, cfg: Config, progress=None) -> None:
     """Runs `states` (host EpisodeStates, before any leg) on the device program and writes the outcome back
-    into them (status, found, declarations, steps, travel, the first plan)."""
+    into them (status, found, declarations, steps, travel, the first plan). eval.batch_size lanes run at once;
+    each call queues up to QUEUE_BATCHES batches of episodes (a power of two of them, padded; the padding is not
+    run)."""
     if loop.spec.explores:
         from ragnav_jax.errors import UserError
 
@@ -263,16 +306,18 @@ def run_device(loop, states: list, cfg: Config, progress=None) -> None:
     G, C, S, T = batch_sizes(states, cfg)
     fl = flags_of(cfg, loop.look_cost)
     world = world_of(loop)
-    prog = compiled(loop.ex, fl)
     B = min(cfg.eval.batch_size, len(states))
-    for c0 in range(0, len(states), B):
-        chunk = states[c0 : c0 + B]
-        inp = _pad(inputs_of(loop, chunk, G, C, S, T), B)
-        sidx = _pad(jnp.asarray([st.s for st in chunk], jnp.int32), B)
+    Q = B * min(QUEUE_BATCHES, 1 << (-(-len(states) // B) - 1).bit_length())  # 1, 2, 4 or 8 batches: few shapes
+    prog = compiled(loop.ex, fl, B)
+    for c0 in range(0, len(states), Q):
+        chunk = states[c0 : c0 + Q]
+        inp = _pad(inputs_of(loop, chunk, G, C, S, T), Q)
+        sidx = _pad(jnp.asarray([st.s for st in chunk], jnp.int32), Q)
         start = _pad(jnp.asarray([[*loop.scenes[st.ep.scene].start.position[:2], loop.scenes[st.ep.scene].start.yaw]
-                                  for st in chunk], jnp.float32), B)
-        lam = jnp.full(B, cfg.planning.lam, jnp.float32)
-        write_back(chunk, prog(world, inp, sidx, start, lam, jnp.float32(cfg.eval.refill)), loop)
+                                  for st in chunk], jnp.float32), Q)
+        lam = jnp.full(Q, cfg.planning.lam, jnp.float32)
+        write_back(chunk, prog(world, inp, sidx, start, lam, jnp.float32(cfg.eval.refill), jnp.int32(len(chunk))),
+                   loop)
         if progress is not None:
             progress(len(chunk))
 

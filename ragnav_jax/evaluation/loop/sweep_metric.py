@@ -6,8 +6,8 @@
 For a chunk of grid points (sigma, eta, ... and the planning lambda) the jitted function scores every subgoal
 with the retrieval kernel (`scored_batch`), ranks each subgoal's candidates on the device
 (`candidates.rank_all`: RAGNav's widened order, distinct instances, the pre-check as a table, the closest
-view), and runs the closed loop (`program.closed_loop`) on points x episodes as one batch, each episode with
-its point's lambda; then judges every episode on the device (`judge`: the rules of `metrics.episode_row`).
+view), and runs the closed loop (`program.closed_loop`) on points x episodes as one queue on eval.batch_size lanes,
+each episode with its point's lambda; then judges every episode on the device (`judge`: the rules of `metrics.episode_row`).
 What does not depend on the grid (parses, verdict and search tables, the pre-check, the Oracle's route) is
 computed once on the host. Sums per modality: successes, SPL, progress and metres driven; the sweep table
 divides them by the episodes of each modality.
@@ -87,9 +87,10 @@ def _candidates(le: LoopEpisodes, params, *, k: int, depth: int, widen: bool, cl
             has[..., None] & r.has_est[idx])
 
 
-def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, refill: float, ranking: dict, init, advance,
-            look):
-    """Sums (V, C, Mods) of every NAMES metric for a chunk of grid points (params as Grid.chunk gives them)."""
+def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, refill: float, lanes: int, ranking: dict, init,
+            advance, look):
+    """Sums (V, C, Mods) of every NAMES metric for a chunk of grid points (params as Grid.chunk gives them); the
+    points x episodes runs are queued on `lanes` lanes (eval.batch_size)."""
     f = jax.vmap(functools.partial(_candidates, **ranking), in_axes=(None, _in_axes(inner)))
     if outer:
         f = jax.vmap(f, in_axes=(None, _in_axes(outer)))
@@ -102,7 +103,7 @@ def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, refill: f
     inp = jax.tree.map(tile, le.base).replace(cands=flat(cands), est=flat(est), has_est=flat(has))
     lams = jnp.broadcast_to(lam[None, :, None], (V, C, E)).reshape(-1)
     st = program.closed_loop(le.world, inp, tile(le.scene_idx), tile(le.start), lams, jnp.float32(refill), fl=fl,
-                             init=init, advance=advance, look=look)
+                             init=init, advance=advance, look=look, lanes=lanes)
     out = jax.vmap(lambda s, n, o, m: judge(s, n, o, m, fl.max_steps))(st, tile(le.num_true), tile(le.strict),
                                                                         tile(le.oracle_m))
     group = le.group.astype(jnp.float32)
@@ -187,7 +188,7 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     fl = program.flags_of(cfg, loop.look_cost)
     ex = loop.ex
     fn = jax.jit(functools.partial(_points, outer=tuple(grid.outer), inner=tuple(grid.inner), fl=fl,
-                                   refill=cfg.eval.refill, ranking=ranking, init=ex.init, advance=ex.advance, look=ex.look_fn))
+                                   refill=cfg.eval.refill, lanes=cfg.eval.batch_size, ranking=ranking, init=ex.init, advance=ex.advance, look=ex.look_fn))
     last: dict = {}
 
     def part(name):
