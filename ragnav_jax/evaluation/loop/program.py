@@ -193,11 +193,12 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
     L = Q if lanes is None else min(lanes, Q)
     count = jnp.int32(Q) if count is None else jnp.asarray(count, jnp.int32)
     first = initial_state(inp, lam, world, fl, N, O)  # (Q) every queued episode's first plan
+    start_d = init(scene_idx, start_pose)  # (Q) and its MJX state at the start pose
     ep = jnp.arange(L, dtype=jnp.int32)  # each lane's episode
     lane = jnp.arange(L, dtype=jnp.int32)
     st = _take(first, ep)
     st = st.replace(done=st.done | (ep >= count))
-    d = init(scene_idx[:L], start_pose[:L])
+    d = _take(start_d, ep)
     P = fl.path_points
     drv = Driving.start(d, jnp.zeros((L, P, 2), jnp.float32), jnp.zeros(L, jnp.int32), jnp.zeros(L, jnp.int32))
     out = jax.tree.map(lambda x: jnp.zeros((Q + L, *x.shape[1:]), x.dtype), st)  # row Q + lane: a lane's scratch
@@ -215,7 +216,7 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
         take = st.done & (new < count)
         ep = jnp.where(take, new, ep)
         st = _select(take, _take(first, ep), st)
-        drv = drv.replace(d=_select(take, init(scene_idx[ep], start_pose[ep]), drv.d))
+        drv = drv.replace(d=_select(take, _take(start_d, ep), drv.d))
         return st, drv, ep, nxt + jnp.sum(take)
 
     def reflect(st, drv, arrived, going, pending, ep, nxt, out):
