@@ -498,6 +498,8 @@ class TuneConfig:
     train_fraction: float = 0.5  # share of each (scene, modality)'s episodes in the training split
     split_seed: int = 0
     init: str = "grid"  # grid: start from the best sweep point on the training split | config: from retrieval
+    closed_loop: bool = False  # also run RAGNav's closed loop (the device engine) on the held-out episodes with the
+    # config's, the best grid point's and the tuned values: held-out navigation success next to retrieval accuracy
 
     def __post_init__(self):
         _check(len(self.params) >= 1 and all(x in TUNABLE for x in self.params), "tune.params",

@@ -187,6 +187,31 @@ def test_an_episode_does_not_depend_on_its_lane_or_queue_place(setup, apartment,
     assert sum(p._cache_size() for p in progs) == before
 
 
+def test_tune_checks_its_values_by_closed_loop_success_on_held_out_episodes(setup, apartment, both):
+    """tune.closed_loop: RAGNav's held-out success with the config's, the best grid point's and the tuned retrieval
+    values, on the module's executor (retrieval values do not recompile the loop); the config's is what `ragnav
+    eval` gets on the held-out episodes."""
+    from ragnav_jax.config import SweepAxes
+    from ragnav_jax.evaluation.tune import run_tune, split_episodes
+
+    cfg, bank, emb, ex, ver = setup
+    eps = load_episodes(EPISODES, [apartment])
+    eps = eps + [dataclasses.replace(e, id=e.id + "-again") for e in eps]  # 12: two episodes of each kind held out
+    sigma = cfg.retrieval.sigma
+    c = dataclasses.replace(cfg, tune=dataclasses.replace(cfg.tune, closed_loop=True, steps=4, eval_every=2),
+                            sweep=dataclasses.replace(cfg.sweep, axes=SweepAxes(sigma=(sigma, 2 * sigma)), checkpoint=False))
+    held = split_episodes(eps, c.tune.train_fraction, c.tune.split_seed)[1]
+    assert 4 < len(held) <= 8  # the module's queue shape (8 on 4 lanes)
+    progs = [v for k, v in ex.cache.items() if k[0] == "device_program"]
+    before = sum(p._cache_size() for p in progs)
+    summary, _ = run_tune(c, bank, [apartment], eps, emb, executor=ex, verifier=ver)
+    nav = summary["held_out_success"]
+    assert set(nav) == {"config", "grid_best", "tuned"} and all(0.0 <= v <= 1.0 for v in nav.values())
+    rows, _ = _rows(setup, apartment, "ragnav", "device", held)
+    assert nav["config"] == pytest.approx(np.mean([r["success"] for r in rows]))
+    assert sum(p._cache_size() for p in progs) == before
+
+
 @settings(max_examples=30, deadline=None)
 @given(st.integers(0, 2**31 - 1))
 def test_visit_sequence_follows_the_solved_slots_and_keeps_dead_goals_in_place(seed):

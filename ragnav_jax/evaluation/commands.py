@@ -84,6 +84,10 @@ def cmd_tune(args, cfg) -> int:
     h = summary["held_out"]
     print(f"held-out accuracy: tuned {h['tuned']:.4f} vs best grid point {h['grid_best']:.4f} "
           f"(config {h['config']:.4f}); tuned values in {out / 'tuned.yaml'} and {out / 'tuned'} (orbax)")
+    if "held_out_success" in summary:
+        n = summary["held_out_success"]
+        print(f"held-out closed-loop success (RAGNav, {summary['held_out_episodes']} episodes): tuned {n['tuned']:.4f} "
+              f"vs best grid point {n['grid_best']:.4f} (config {n['config']:.4f})")
     return 0
 
 

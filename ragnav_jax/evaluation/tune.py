@@ -205,11 +205,34 @@ def _accuracy(hits: np.ndarray, totals: np.ndarray, modalities: Sequence[str]) -
     return out
 
 
-def run_tune(cfg, bank, scenes, episodes, embedder, out: str | Path | None = None, progress: bool = False):
-    """Split, grid on the training split, tune from the best grid point, compare on the held-out split.
+def held_out_success(cfg, bank, scenes, episodes, embedder, candidates: dict, executor=None,
+                     verifier=None) -> dict[str, float]:
+    """RAGNav's closed-loop success on `episodes` with each candidate's retrieval values ({name: RetrievalParams}),
+    on the device engine. One executor and verifier serve every candidate: retrieval values change the host's
+    candidates, not the compiled loop."""
+    from ragnav_jax.evaluation.execute import make_executor
+    from ragnav_jax.evaluation.navigate import evaluate_navigation
+    from ragnav_jax.evaluation.verify import Verifier
 
-    With `out`: the orbax folder out/tuned, the table out/tune.{csv,md} and the loss curve out/loss.png.
-    Returns (summary dict, config with the tuned retrieval section).
+    cfg = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, engine="device"))
+    used = {e.scene for e in episodes}
+    executor = executor or make_executor([s for s in scenes if s.name in used], cfg)
+    verifier = verifier or Verifier.build(embedder, cfg)
+    out = {}
+    for name, p in candidates.items():
+        rows, _ = evaluate_navigation(bank, scenes, episodes, embedder, tuned_config(cfg, p), "ragnav",
+                                      executor=executor, verifier=verifier)
+        out[name] = float(np.mean([r["success"] for r in rows])) if rows else 0.0
+    return out
+
+
+def run_tune(cfg, bank, scenes, episodes, embedder, out: str | Path | None = None, progress: bool = False,
+             executor=None, verifier=None):
+    """Split, grid on the training split, tune from the best grid point, compare on the held-out split (retrieval
+    accuracy; with tune.closed_loop also RAGNav's closed-loop success, `held_out_success`).
+
+    With `out`: the orbax folder out/tuned, the tables out/tune.{csv,md} (and out/tune_closed_loop.{csv,md}) and
+    the loss curve out/loss.png. Returns (summary dict, config with the tuned retrieval section).
     """
     import time
 
@@ -265,6 +288,10 @@ def run_tune(cfg, bank, scenes, episodes, embedder, out: str | Path | None = Non
         "train": {k: _accuracy(v[0], tmeta.totals, mods)["all"] for k, v in acc.items()},
         "held_out": {k: _accuracy(v[1], smeta.totals, mods)["all"] for k, v in acc.items()},
     }
+    if tc.closed_loop:
+        nav = held_out_success(cfg, bank, scenes, test_eps, embedder,
+                               {"config": base, "grid_best": grid_best, "tuned": res.params}, executor, verifier)
+        summary["held_out_success"] = nav
     if out is not None:
         import matplotlib
 
@@ -275,6 +302,9 @@ def run_tune(cfg, bank, scenes, episodes, embedder, out: str | Path | None = Non
 
         out = Path(out)
         write_table(rows, out / "tune")
+        if "held_out_success" in summary:
+            write_table([{"method": k, "split": "held_out", "episodes": len(test_eps), "closed_loop_success": round(v, 4)}
+                         for k, v in summary["held_out_success"].items()], out / "tune_closed_loop")
         save_tuned(res.params, res.temperature, out / "tuned")
         fig, ax = plt.subplots(figsize=(5, 3))
         ax.plot(res.losses)
