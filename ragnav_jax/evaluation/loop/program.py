@@ -6,9 +6,10 @@ Host Python runs before the loop (the padded `World` and `Inputs` from what `eva
 candidates, verdict and search tables, the memory's paths, occupancy grids and local plans of map edges)
 and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
 makes the rows). In between, each iteration of the while_loop reflects on the episodes whose leg ended
-(look-around with MJX camera visibility -> `step.after_leg` -> budget -> `step.next_leg` -> waypoints, all
-vmapped and masked) and then drives (`Executor.advance`, a while_loop over MJX control steps) until a share
-`eval.refill` of the legs going have ended, so short legs do not wait for the batch's longest. The method is
+(look-around with MJX camera visibility -> `step.after_leg` -> budget -> a lane whose episode ended takes the
+next queued one -> `step.next_leg` -> waypoints, all vmapped and masked) and then drives (`Executor.advance`, a
+while_loop over MJX control steps) until a share `eval.refill` of the legs going have ended, so short legs do
+not wait for the batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
 data (`Inputs`), the settings static `Flags`, the order penalty lambda an array: a sweep over it, and every
 method, reuse one compilation.
 
