@@ -18,7 +18,6 @@ from __future__ import annotations
 import argparse
 import copy
 import dataclasses
-import functools
 import json
 import statistics
 import sys
@@ -86,13 +85,11 @@ def main(argv=None) -> int:
         program.run_device = run_device
     loop, states = captured["loop"], captured["states"]
     states = [states[i % len(states)] for i in range(a.batch)]
-    T = max(len(st.ep.goals) for st in states)
-    G = max(T, max(len(st.status) for st in states), 1)
-    C = max([cfg.eval.candidates] + [len(c) for st in states for c in st.cands])
+    G, C, S, T = program.batch_sizes(states, cfg)
     fl = program.flags_of(cfg, loop.look_cost)
     world = program.world_of(loop)
     t = time.perf_counter()
-    inp = program.inputs_of(loop, states, G, C, max(1, cfg.eval.search_nodes), T)
+    inp = program.inputs_of(loop, states, G, C, S, T)
     host = {"inputs_of_s": time.perf_counter() - t}
     E = len(states)
     sidx = jnp.asarray([st.s for st in states], jnp.int32)
@@ -127,8 +124,7 @@ def main(argv=None) -> int:
         phases["drive_steps_taken_mean"] = float(np.asarray(res[f"drive_{a.steps}_steps"]["out"][0].steps).mean())
     final = None
     for lanes in [None] + [int(x) for x in a.lanes.split(",") if x]:
-        prog = jax.jit(functools.partial(program.closed_loop, fl=fl, init=ex.init, advance=ex.advance,
-                                         look=ex.look_fn, lanes=lanes))
+        prog = program.compiled(ex, fl, lanes)
         key = "closed_loop_refill_1" + ("" if lanes is None else f"_lanes_{lanes}")
         res[key] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
         same = None if final is None else all(bool(np.array_equal(x, y)) for x, y in zip(
