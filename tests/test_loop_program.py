@@ -136,9 +136,11 @@ def test_device_loop_refuses_etpnav_directly(setup, apartment):
         program.run_device(loop, [object()], cfg)
 
 
-def test_closed_loop_sweep_matches_the_device_eval(setup, apartment):
+def test_closed_loop_sweep_matches_the_device_eval(setup, apartment, both):
     """The sweep's closed-loop metric at the configured point (device candidate ranking, device judging) counts
-    the successes that `ragnav eval`'s device engine (host ranking, host rows) gets; lambda is a grid axis."""
+    the successes that `ragnav eval`'s device engine (host ranking, host rows) gets, with its compiled loop;
+    lambda is a grid axis. A point that ranks every candidate alike (here a sigma 0.01% away, in a later chunk)
+    reads the runs it shares instead of running them again."""
     from ragnav_jax.config import SweepAxes
     from ragnav_jax.evaluation.loop.sweep_metric import closed_loop_metrics
     from ragnav_jax.evaluation.sweep import evaluate_grid, make_grid
@@ -148,18 +150,26 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment):
     episodes = load_episodes(EPISODES, [apartment])
     mods = tuple(sorted({e.modality for e in episodes}))
     sigma = cfg.retrieval.sigma
-    sweep = dataclasses.replace(cfg.sweep, axes=SweepAxes(sigma=(sigma, 0.25 * sigma), lam=(cfg.planning.lam,)),
-                                variants=("ragnav",), chunk_size=2)
+    sweep = dataclasses.replace(cfg.sweep, axes=SweepAxes(sigma=(sigma, 0.25 * sigma, 1.0001 * sigma), lam=(cfg.planning.lam,)),
+                                variants=("ragnav",), chunk_size=1)
     c = dataclasses.replace(cfg, sweep=sweep)
     grid = make_grid(c.sweep, params_from_config(c.retrieval), c.planning.lam)
     metrics = closed_loop_metrics(c, bank, [apartment], episodes, emb, grid, mods, executor=ex, verifier=ver)
-    sums, stats = evaluate_grid(metrics, grid, chunk_size=2)
-    assert stats["chunks_computed"] == 1
+    progs = [v for k, v in ex.cache.items() if k[0] == "device_program"]
+    before = sum(p._cache_size() for p in progs)
+    sums, stats = evaluate_grid(metrics, grid, chunk_size=1)
+    assert stats["chunks_computed"] == 3
     rows, _ = _rows(setup, apartment, "ragnav", "device", episodes)
     want = [sum(r["success"] for r in rows if r["modality"] == m) for m in mods]
     assert sums["nav_success"][0].tolist() == want
     assert 0.0 <= sums["nav_spl"][0].sum() <= sums["nav_success"][0].sum() + 1e-6
     assert sums["nav_travel_m"][0].sum() == pytest.approx(sum(r["travel_distance_m"] for r in rows), rel=1e-3)
+    for name in sums:
+        np.testing.assert_array_equal(sums[name][2], sums[name][0])
+    runs = metrics[0].stats
+    assert runs["episode_runs"] == 3 * len(episodes) and len(episodes) <= runs["loop_runs"] <= 2 * len(episodes)
+    assert runs["loop_calls"] <= 2  # the third point's runs are the first's
+    assert sum(p._cache_size() for p in progs) == before  # the device eval's compiled loop ran the sweep
 
 
 def test_refill_changes_speed_not_rows(setup, apartment, both):

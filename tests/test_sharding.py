@@ -54,3 +54,54 @@ def test_init_distributed_reads_its_variables(monkeypatch):
     assert init_distributed({"RAGNAV_DISTRIBUTED": "1"}) and calls[-1] == {}  # cluster auto-detection
     with pytest.raises(UserError, match="RAGNAV_PROCESS_ID"):
         init_distributed({"RAGNAV_DISTRIBUTED": "1", "RAGNAV_PROCESS_ID": "one"})
+
+
+_LOOP_RUNS = r"""
+import json, sys
+import jax, jax.numpy as jnp, numpy as np
+from ragnav_jax.evaluation import sharding
+from ragnav_jax.evaluation.loop.sweep_metric import LoopRuns, sharded_runs
+
+def fn(le, run_e, cands, est, has, lam, count):  # a stand-in queue: each run's outcome from its inputs alone
+    got = jnp.stack([run_e * le["w"] + lam, cands.sum((1, 2)) * 1.0, est.sum((1, 2, 3)), has.sum((1, 2)) * 1.0], -1)
+    return jnp.where((jnp.arange(run_e.shape[0]) < count[0])[:, None], got, jnp.nan)  # padding: NaN
+
+rng = np.random.default_rng(0)
+V, C, E, G, k = 1, 5, 7, 2, 3
+cands = rng.integers(0, 3, (V, C, E, G, k)).astype(np.int32)
+cands[:, 3] = cands[:, 0]  # point 3 ranks every episode like point 0
+est = rng.normal(size=(V, C, E, G, k, 2)).astype(np.float32) * (cands[..., None] > 0)
+est[:, 3] = est[:, 0]
+has = cands > 0
+lam = np.asarray([0, 0, 1e4, 0, 0], np.float32)
+mesh = sharding.batch_mesh() if jax.device_count() > 1 else None
+runs = LoopRuns(sharded_runs(fn, mesh) if mesh else jax.jit(fn), {"w": jnp.float32(10.0)}, lanes=2, mesh=mesh)
+a = runs(cands, est, has, lam)
+b = runs(cands[:, :2], est[:, :2], has[:, :2], lam[:2])  # a later chunk of points already met
+print(json.dumps({"devices": jax.device_count(), "a": a.tolist(), "b": b.tolist(), **runs.stats}))
+"""
+
+
+def test_loop_runs_deal_runs_over_four_devices_and_run_each_once():
+    """LoopRuns (the closed-loop sweep's runs) on 4 forced CPU devices with a stand-in queue: every run's
+    outcome as on one device, the padding never read, and a run met again (an equal point, a later chunk) not
+    run again."""
+    import subprocess
+    import sys
+
+    def go(devices):
+        env = {**__import__("os").environ, "JAX_PLATFORMS": "cpu",
+               "XLA_FLAGS": f"--xla_force_host_platform_device_count={devices}"}
+        out = subprocess.run([sys.executable, "-c", _LOOP_RUNS], env=env, capture_output=True, text=True, timeout=300)
+        assert out.returncode == 0, out.stderr[-2000:]
+        return json.loads(out.stdout.strip().splitlines()[-1])
+
+    one, four = go(1), go(4)
+    assert (one["devices"], four["devices"]) == (1, 4)
+    a = np.asarray(four["a"])
+    assert a.shape == (1, 5, 7, 4) and np.isfinite(a).all()
+    np.testing.assert_array_equal(a, np.asarray(one["a"]))
+    np.testing.assert_array_equal(np.asarray(four["b"]), a[:, :2])
+    assert four["episode_runs"] == one["episode_runs"] == 5 * 7 + 2 * 7
+    assert four["loop_runs"] == one["loop_runs"] == 4 * 7  # point 3 repeats point 0; the later chunk, 0 and 1
+    np.testing.assert_array_equal(a[0, :, :, 0], np.arange(7)[None] * 10.0 + np.asarray([0, 0, 1e4, 0, 0])[:, None])

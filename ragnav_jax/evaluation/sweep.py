@@ -128,6 +128,7 @@ class GridMetric:
     modalities: tuple[str, ...]
     fingerprint: str  # digest of the data the metric reads (checkpoints of another data set are refused)
     uses_lam: bool = False
+    stats: dict = dataclasses.field(default_factory=dict)  # what computing it counted (reported in the summary)
 
 
 def _digest(tree) -> str:
@@ -360,6 +361,11 @@ def plot_heatmaps(rows: list[dict], axes: tuple[str, str], folder: str | Path,
     return out
 
 
+def sweep_mesh(cfg):
+    """The mesh a sweep splits its chunks over (sweep.shard and several devices), or None."""
+    return sharding.batch_mesh() if cfg.sweep.shard and jax.device_count() > 1 else None
+
+
 def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | None = None, fresh: bool = False,
               progress: bool = False, log: Callable[[str], None] | None = None,
               extra_metrics: Sequence[GridMetric] = (), bank=None, scenes=None) -> tuple[list[dict], dict]:
@@ -383,7 +389,7 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
         from ragnav_jax.evaluation.plan_metric import plan_metric
 
         extra.append(plan_metric(batch, meta, bank, scenes, grid))
-    mesh = sharding.batch_mesh() if cfg.sweep.shard and jax.device_count() > 1 else None
+    mesh = sweep_mesh(cfg)
     metrics = [retrieval_metric(batch, meta, grid, mesh), *extra]
     store = None
     if out is not None and cfg.sweep.checkpoint:
@@ -404,6 +410,7 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
         "modalities": list(meta.modalities), "queries": int(meta.totals.sum()), "metrics": names,
         "best": {v: {k: r[k] for k in ("point", *grid.axes, *names)} for v, r in best_points(rows).items()},
         **stats,
+        **{k: v for m in metrics for k, v in m.stats.items()},
     }
     if "nav_success" in names:
         summary["best_nav"] = {v: {k: r[k] for k in ("point", *grid.axes, *names)}

@@ -3,14 +3,15 @@
     metrics = closed_loop_metrics(cfg, bank, scenes, episodes, embedder, grid, meta.modalities)
     run_sweep(cfg, batch, meta, out, extra_metrics=metrics)   # `ragnav sweep --closed-loop`
 
-For a chunk of grid points (sigma, eta, ... and the planning lambda) the jitted function scores every subgoal
-with the retrieval kernel (`scored_batch`), ranks each subgoal's candidates on the device
+For a chunk of grid points (sigma, eta, ... and the planning lambda) one jitted function scores every subgoal
+with the retrieval kernel (`scored_batch`) and ranks each subgoal's candidates on the device
 (`candidates.rank_all`: RAGNav's widened order, distinct instances, the pre-check as a table, the closest
-view), and runs the closed loop (`program.closed_loop`) on points x episodes as one queue on eval.batch_size lanes,
-each episode with its point's lambda; then judges every episode on the device (`judge`: the rules of `metrics.episode_row`).
-What does not depend on the grid (parses, verdict and search tables, the pre-check, the Oracle's route) is
-computed once on the host. Sums per modality: successes, SPL, progress and metres driven; the sweep table
-divides them by the episodes of each modality.
+view). `LoopRuns` then runs the closed loop (`program.closed_loop`) once for each distinct (episode,
+candidates, lambda) the sweep meets, queued on eval.batch_size lanes (on each device of the sweep's mesh),
+and judges each run on the device (`judge`: the rules of `metrics.episode_row`); grid points that rank an
+episode's candidates alike read the same run. What does not depend on the grid (parses, verdict and search
+tables, the pre-check, the Oracle's route) is computed once on the host. Sums per modality: successes, SPL,
+progress and metres driven; the sweep table divides them by the episodes of each modality.
 """
 
 from __future__ import annotations
@@ -26,8 +27,8 @@ from flax import struct
 from ragnav_jax.config import Config
 from ragnav_jax.evaluation.loop import program
 from ragnav_jax.evaluation.loop.candidates import rank_all
-from ragnav_jax.evaluation.loop.state import Flags, Inputs, State, World
-from ragnav_jax.evaluation.sweep import Grid, GridMetric, _digest, _in_axes
+from ragnav_jax.evaluation.loop.state import Inputs, State, World
+from ragnav_jax.evaluation.sweep import Grid, GridMetric, _digest, _in_axes, sweep_mesh
 from ragnav_jax.retrieval.evaluate import RetrievalBatch, scored_batch
 
 NAMES = ("nav_success", "nav_spl", "nav_progress", "nav_travel_m")
@@ -87,28 +88,131 @@ def _candidates(le: LoopEpisodes, params, *, k: int, depth: int, widen: bool, cl
             has[..., None] & r.has_est[idx])
 
 
-def _points(le: LoopEpisodes, params, lam, *, outer, inner, fl: Flags, refill: float, lanes: int, ranking: dict, init,
-            advance, look):
-    """Sums (V, C, Mods) of every NAMES metric for a chunk of grid points (params as Grid.chunk gives them); the
-    points x episodes runs are queued on `lanes` lanes (eval.batch_size)."""
+def _chunk_candidates(le: LoopEpisodes, params, *, outer, inner, ranking: dict):
+    """(V, C, E, G, K) candidates, instance estimates (zero where there is none) and their masks for a chunk of
+    grid points (params as Grid.chunk gives them), K the width of the episodes' inputs (-1 / False padded)."""
     f = jax.vmap(functools.partial(_candidates, **ranking), in_axes=(None, _in_axes(inner)))
     if outer:
-        f = jax.vmap(f, in_axes=(None, _in_axes(outer)))
-        cands, est, has = f(le, params)  # (V, C, E, G, k)
+        cands, est, has = jax.vmap(f, in_axes=(None, _in_axes(outer)))(le, params)
     else:
         cands, est, has = (x[None] for x in f(le, params))
-    V, C, E = cands.shape[:3]
-    flat = lambda x: x.reshape((V * C * E, *x.shape[3:]))  # noqa: E731
-    tile = lambda x: jnp.broadcast_to(x, (V, C, *x.shape)).reshape((V * C * x.shape[0], *x.shape[1:]))  # noqa: E731
-    inp = jax.tree.map(tile, le.base).replace(cands=flat(cands), est=flat(est), has_est=flat(has))
-    lams = jnp.broadcast_to(lam[None, :, None], (V, C, E)).reshape(-1)
-    st = program.closed_loop(le.world, inp, tile(le.scene_idx), tile(le.start), lams, jnp.float32(refill), fl=fl,
-                             init=init, advance=advance, look=look, lanes=lanes)
-    out = jax.vmap(lambda s, n, o, m: judge(s, n, o, m, fl.max_steps))(st, tile(le.num_true), tile(le.strict),
-                                                                        tile(le.oracle_m))
-    group = le.group.astype(jnp.float32)
-    return {name: jnp.einsum("vce,em->vcm", x.astype(jnp.float32).reshape(V, C, E), group)
-            for name, x in zip(NAMES, out)}
+    wide = [(0, 0)] * 4 + [(0, le.base.cands.shape[-1] - cands.shape[-1])]
+    return (jnp.pad(cands, wide, constant_values=-1), jnp.pad(jnp.where(has[..., None], est, 0.0), [*wide, (0, 0)]),
+            jnp.pad(has, wide))
+
+
+@functools.partial(jax.jit, static_argnames="max_steps")
+def _judge_runs(st: State, num_true, strict, oracle_m, *, max_steps: int):
+    """(Q, 4) float32 success, SPL, progress and metres driven of Q final States."""
+    out = jax.vmap(lambda s, n, o, m: judge(s, n, o, m, max_steps))(st, num_true, strict, oracle_m)
+    return jnp.stack([x.astype(jnp.float32) for x in out], axis=-1)
+
+
+def _judged_runs(le: LoopEpisodes, run_e, cands, est, has, lam, count, *, loop_fn, refill: float, max_steps: int):
+    """(Q, 4) `_judge_runs` of Q queued closed-loop runs: episode run_e (Q,) with candidates (Q, G, K), estimates
+    (Q, G, K, 2), masks (Q, G, K) and order penalty lam (Q,); the first count[0] are run, the rest is padding.
+    loop_fn: `program.closed_loop` with its static settings (the device eval's compiled one on one device)."""
+    inp = jax.tree.map(lambda x: x[run_e], le.base).replace(cands=cands, est=est, has_est=has)
+    st = loop_fn(le.world, inp, le.scene_idx[run_e], le.start[run_e], lam, jnp.float32(refill), count[0])
+    return _judge_runs(st, le.num_true[run_e], le.strict[run_e], le.oracle_m[run_e], max_steps=max_steps)
+
+
+def sharded_runs(fn, mesh):
+    """fn(le, run_e, cands, est, has, lam, count) of one device's queue, jitted over a mesh: le replicated, the
+    runs and count (one per device) split along their leading axis, no communication inside."""
+    from jax.sharding import PartitionSpec as P
+
+    from ragnav_jax.evaluation.sharding import AXIS
+
+    return jax.jit(jax.shard_map(fn, mesh=mesh, in_specs=(P(), *(P(AXIS),) * 6), out_specs=P(AXIS)))
+
+
+def _deal(x: np.ndarray, slot: np.ndarray, size: int) -> np.ndarray:
+    """x's rows placed at `slot` of `size` zero rows."""
+    y = np.zeros((size, *x.shape[1:]), x.dtype)
+    y[slot] = x
+    return y
+
+
+class LoopRuns:
+    """RAGNav's closed loop at many grid points, each distinct run once.
+
+    A run's outcome depends only on its episode, its candidates (with their instance estimates) and its order
+    penalty: the loop reads nothing else of the grid point, and an episode's rows do not depend on its lane or
+    its place in the queue (tests/test_loop_program.py). Grid points that rank an episode's candidates alike
+    (most of a sigma x eta grid) share one run, so a sweep runs the distinct (episode, candidates, lambda)
+    inputs it meets, each once over all its chunks, and reads the others from the runs it made.
+
+    With a mesh of several devices each call's runs are dealt out over them (run r to device r % n) and every
+    device runs its own queue on eval.batch_size lanes (shard_map: no communication inside the loop), so a
+    run's outcome does not depend on the number of devices either.
+    """
+
+    def __init__(self, fn, le, lanes: int, mesh=None):
+        """fn(le, run_e, cands, est, has, lam, count) -> (Q, 4) outcomes: `_judged_runs` with its settings, or
+        with a mesh `sharded_runs` of it; le: what fn reads besides the runs; lanes: eval.batch_size."""
+        from ragnav_jax.evaluation.sharding import replicate
+
+        self.fn, self.lanes, self.mesh = fn, lanes, mesh
+        self.n, self.q = (mesh.size if mesh is not None else 1), 0
+        self.le = replicate(le, mesh) if mesh is not None else le
+        self.index: dict[bytes, int] = {}  # a run's inputs -> its row of `results`
+        self.results = np.zeros((0, 4), np.float32)
+        self.stats = {"episode_runs": 0, "loop_runs": 0, "loop_calls": 0, "loop_s": 0.0}
+
+    def queue_size(self, runs: int) -> int:
+        """Runs per device of one call: 1, 2, 4 or 8 batches of lanes, as few as hold `runs` but never fewer than
+        an earlier call's (a sweep's later chunks, with few new runs, reuse its compilation)."""
+        per = -(-runs // self.n)
+        self.q = max(self.q, self.lanes * min(program.QUEUE_BATCHES, 1 << (-(-per // self.lanes) - 1).bit_length()))
+        return self.q
+
+    def _run(self, *runs) -> np.ndarray:
+        """(U, 4) outcomes of U new runs (host arrays run_e, cands, est, has, lam with U leading), in calls of at
+        most QUEUE_BATCHES batches of lanes per device."""
+        import time
+
+        from ragnav_jax.evaluation import sharding
+
+        U, most, out = len(runs[0]), self.n * self.lanes * program.QUEUE_BATCHES, []
+        for lo in range(0, U, most):
+            m = min(U - lo, most)
+            Qd = self.queue_size(m)
+            slot = (np.arange(m) % self.n) * Qd + np.arange(m) // self.n  # run r: device r % n, in run order
+            args = [_deal(x[lo : lo + m], slot, self.n * Qd) for x in runs]
+            args.append(np.bincount(np.arange(m) % self.n, minlength=self.n).astype(np.int32))  # runs per device
+            args = sharding.shard_leading(args, self.mesh) if self.mesh is not None else [jnp.asarray(a) for a in args]
+            t0 = time.perf_counter()
+            res = sharding.to_host(self.fn(self.le, *args))
+            self.stats["loop_s"] = round(self.stats["loop_s"] + time.perf_counter() - t0, 3)
+            self.stats["loop_calls"] += 1
+            out.append(res[slot])
+        return np.concatenate(out) if out else np.zeros((0, 4), np.float32)
+
+    def __call__(self, cands, est, has, lam) -> np.ndarray:
+        """(V, C, E, 4) outcomes of every episode at a chunk's points: cands, est, has (V, C, E, ...) as
+        `_chunk_candidates` gives them, lam (C,). Runs only the inputs no earlier call met."""
+        cands, est, has = np.asarray(cands), np.asarray(est, np.float32), np.asarray(has)
+        V, C, E = cands.shape[:3]
+        R = V * C * E
+        run_e = np.broadcast_to(np.arange(E, dtype=np.int32), (V, C, E)).reshape(R)
+        lams = np.broadcast_to(np.asarray(lam, np.float32)[None, :, None], (V, C, E)).reshape(R)
+        flat = [x.reshape(R, *x.shape[3:]) for x in (cands, est, has)]
+        keys = np.concatenate([np.ascontiguousarray(x).reshape(R, -1).view(np.uint8).reshape(R, -1)
+                               for x in (run_e, lams, *flat)], axis=1)
+        uniq, first, inv = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+        rows, todo = np.empty(len(uniq), np.int64), []
+        for u, k in enumerate(map(bytes, uniq)):
+            if k not in self.index:
+                self.index[k] = len(self.index)
+                todo.append(u)
+            rows[u] = self.index[k]
+        if todo:
+            f = first[todo]
+            self.results = np.concatenate([self.results, self._run(run_e[f], *(x[f] for x in flat), lams[f])])
+        self.stats["episode_runs"] += R
+        self.stats["loop_runs"] += len(todo)
+        return self.results[rows[inv.reshape(R)]].reshape(V, C, E, 4)
 
 
 def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embedder, modalities: Sequence[str],
@@ -129,10 +233,8 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
     ground = grounder(spec, bank, scenes, episodes, cfg, verifier)
     batch, bmeta = prepare_batch(bank, scenes, episodes, embedder, ground=ground, every_subgoal=True, bucket_slots=True)
     by_name = {s.name: s for s in scenes}
-    G = max(max(len(st.status) for st in states), 1)
-    k = cfg.eval.candidates
-    S, T = max(1, cfg.eval.search_nodes), max(len(st.ep.goals) for st in states)
-    base = program.inputs_of(loop, states, G, k, S, T)
+    G, C, S, T = program.batch_sizes(states, cfg)  # the device eval's shapes: its compiled loop serves the sweep
+    base = program.inputs_of(loop, states, G, C, S, T)
     index_of = {ep.id: e for e, ep in enumerate(episodes)}
     I = int(batch.index.inst_pos.shape[1])
     slot = np.full((len(states), G), -1, np.int32)
@@ -172,7 +274,8 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
         strict=jnp.asarray([st.ep.order == "strict" for st in states]),
         num_true=jnp.asarray([len(st.ep.goals) for st in states], jnp.int32), oracle_m=jnp.asarray(oracle_m),
         group=jnp.asarray(group))
-    return le, totals, loop, dict(k=k, depth=CANDIDATE_DEPTH, widen=cfg.eval.widen, closest_view=cfg.eval.closest_view)
+    return le, totals, loop, dict(k=cfg.eval.candidates, depth=CANDIDATE_DEPTH, widen=cfg.eval.widen,
+                                  closest_view=cfg.eval.closest_view)
 
 
 def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embedder, grid: Grid,
@@ -186,19 +289,31 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
                         "drop it from sweep.variants")
     le, totals, loop, ranking = loop_episodes(cfg, bank, scenes, episodes, embedder, modalities, executor, verifier)
     fl = program.flags_of(cfg, loop.look_cost)
-    ex = loop.ex
-    fn = jax.jit(functools.partial(_points, outer=tuple(grid.outer), inner=tuple(grid.inner), fl=fl,
-                                   refill=cfg.eval.refill, lanes=cfg.eval.batch_size, ranking=ranking, init=ex.init, advance=ex.advance, look=ex.look_fn))
+    ex, lanes, mesh = loop.ex, cfg.eval.batch_size, sweep_mesh(cfg)
+    if mesh is None:
+        fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes), refill=cfg.eval.refill,
+                               max_steps=fl.max_steps)
+    else:
+        loop_fn = functools.partial(program.closed_loop, fl=fl, init=ex.init, advance=ex.advance, look=ex.look_fn,
+                                    lanes=lanes)
+        fn = sharded_runs(functools.partial(_judged_runs, loop_fn=loop_fn, refill=cfg.eval.refill,
+                                            max_steps=fl.max_steps), mesh)
+    runs = LoopRuns(fn, le, lanes, mesh)
+    cands = jax.jit(functools.partial(_chunk_candidates, outer=tuple(grid.outer), inner=tuple(grid.inner),
+                                      ranking=ranking))
+    group = np.asarray(le.group, np.float64)
     last: dict = {}
 
     def part(name):
         def f(params, lam):
             if "args" not in last or last["args"][0] is not params or last["args"][1] is not lam:  # a new chunk
-                last.update(args=(params, lam), out=fn(le, params, jnp.asarray(lam)))
+                out = runs(*cands(le, params), np.asarray(lam))  # (V, C, E, 4)
+                last.update(args=(params, lam), out=dict(zip(NAMES, np.einsum("vcek,em->kvcm", out, group))))
             return last["out"][name]
 
         return f
 
     fp = _digest((le.base, le.slot, le.ruled, le.oracle_m)) + f"|{fl}|{ranking}"
-    return [GridMetric(name, part(name), totals, tuple(modalities), fp, uses_lam=True) for name in NAMES]
+    return [GridMetric(name, part(name), totals, tuple(modalities), fp, uses_lam=True, stats=runs.stats)
+            for name in NAMES]
 
