@@ -403,6 +403,9 @@ def run_sweep(cfg, batch: RetrievalBatch, meta: BatchMeta, out: str | Path | Non
         if store is not None:
             store.close()
     stats["wall_s"] = round(time.perf_counter() - t0, 3)
+    peaks = [(d.memory_stats() or {}).get("peak_bytes_in_use") for d in jax.local_devices()]
+    if all(p is not None for p in peaks):  # accelerators report their memory; the CPU does not
+        stats["device_peak_memory_mb"] = [round(p / 2**20, 1) for p in peaks]
     rows = sweep_rows(grid, metrics, sums)
     names = [m.name for m in metrics]
     summary = {

@@ -124,7 +124,8 @@ def sharded_runs(fn, mesh):
 
     from ragnav_jax.evaluation.sharding import AXIS
 
-    return jax.jit(jax.shard_map(fn, mesh=mesh, in_specs=(P(), *(P(AXIS),) * 6), out_specs=P(AXIS)))
+    # check_vma=False: the loop's carries start as constants and become per-device values (no collective reads them)
+    return jax.jit(jax.shard_map(fn, mesh=mesh, in_specs=(P(), *(P(AXIS),) * 6), out_specs=P(AXIS), check_vma=False))
 
 
 def _deal(x: np.ndarray, slot: np.ndarray, size: int) -> np.ndarray:
@@ -158,7 +159,8 @@ class LoopRuns:
         self.le = replicate(le, mesh) if mesh is not None else le
         self.index: dict[bytes, int] = {}  # a run's inputs -> its row of `results`
         self.results = np.zeros((0, 4), np.float32)
-        self.stats = {"episode_runs": 0, "loop_runs": 0, "loop_calls": 0, "loop_s": 0.0}
+        self.stats = {"episode_runs": 0, "loop_runs": 0, "loop_calls": 0, "loop_s": 0.0, "loop_call_s": [],
+                      "loop_call_runs": []}  # each call's seconds (the first of a queue shape compiles) and runs
 
     def queue_size(self, runs: int) -> int:
         """Runs per device of one call: 1, 2, 4 or 8 batches of lanes, as few as hold `runs` but never fewer than
@@ -184,8 +186,11 @@ class LoopRuns:
             args = sharding.shard_leading(args, self.mesh) if self.mesh is not None else [jnp.asarray(a) for a in args]
             t0 = time.perf_counter()
             res = sharding.to_host(self.fn(self.le, *args))
-            self.stats["loop_s"] = round(self.stats["loop_s"] + time.perf_counter() - t0, 3)
+            dt = time.perf_counter() - t0
+            self.stats["loop_s"] = round(self.stats["loop_s"] + dt, 3)
             self.stats["loop_calls"] += 1
+            self.stats["loop_call_s"].append(round(dt, 3))
+            self.stats["loop_call_runs"].append(m)
             out.append(res[slot])
         return np.concatenate(out) if out else np.zeros((0, 4), np.float32)
 
