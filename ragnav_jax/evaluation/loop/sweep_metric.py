@@ -295,6 +295,12 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     le, totals, loop, ranking = loop_episodes(cfg, bank, scenes, episodes, embedder, modalities, executor, verifier)
     fl = program.flags_of(cfg, loop.look_cost)
     ex, lanes, mesh = loop.ex, cfg.eval.batch_size, sweep_mesh(cfg)
+    if mesh is not None and mesh.devices.flat[0].platform == "gpu":
+        import sys
+
+        print("sweep --closed-loop: the loop runs on one GPU (XLA's GPU compiler crashed on the loop sharded over "
+              "several, 2026-11-27; README, Sweeps); retrieval stays sharded", file=sys.stderr)
+        mesh = None
     if mesh is None:
         fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes), refill=cfg.eval.refill,
                                max_steps=fl.max_steps)
@@ -304,6 +310,7 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
         fn = sharded_runs(functools.partial(_judged_runs, loop_fn=loop_fn, refill=cfg.eval.refill,
                                             max_steps=fl.max_steps), mesh)
     runs = LoopRuns(fn, le, lanes, mesh)
+    runs.stats["loop_devices"] = runs.n
     cands = jax.jit(functools.partial(_chunk_candidates, outer=tuple(grid.outer), inner=tuple(grid.inner),
                                       ranking=ranking))
     group = np.asarray(le.group, np.float64)
