@@ -59,8 +59,7 @@ def test_init_distributed_reads_its_variables(monkeypatch):
 _LOOP_RUNS = r"""
 import json, sys
 import jax, jax.numpy as jnp, numpy as np
-from ragnav_jax.evaluation import sharding
-from ragnav_jax.evaluation.loop.sweep_metric import LoopRuns, sharded_runs
+from ragnav_jax.evaluation.loop.sweep_metric import LoopRuns
 
 def fn(le, run_e, cands, est, has, lam, count):  # a stand-in queue: each run's outcome from its inputs alone
     got = jnp.stack([run_e * le["w"] + lam, cands.sum((1, 2)) * 1.0, est.sum((1, 2, 3)), has.sum((1, 2)) * 1.0], -1)
@@ -74,8 +73,8 @@ est = rng.normal(size=(V, C, E, G, k, 2)).astype(np.float32) * (cands[..., None]
 est[:, 3] = est[:, 0]
 has = cands > 0
 lam = np.asarray([0, 0, 1e4, 0, 0], np.float32)
-mesh = sharding.batch_mesh() if jax.device_count() > 1 else None
-runs = LoopRuns(sharded_runs(fn, mesh) if mesh else jax.jit(fn), {"w": jnp.float32(10.0)}, lanes=2, mesh=mesh)
+devices = jax.devices() if jax.device_count() > 1 else None
+runs = LoopRuns(jax.jit(fn), {"w": jnp.float32(10.0)}, lanes=2, devices=devices)
 a = runs(cands, est, has, lam)
 b = runs(cands[:, :2], est[:, :2], has[:, :2], lam[:2])  # a later chunk of points already met
 print(json.dumps({"devices": jax.device_count(), "a": a.tolist(), "b": b.tolist(), **runs.stats}))
@@ -83,9 +82,9 @@ print(json.dumps({"devices": jax.device_count(), "a": a.tolist(), "b": b.tolist(
 
 
 def test_loop_runs_deal_runs_over_four_devices_and_run_each_once():
-    """LoopRuns (the closed-loop sweep's runs) on 4 forced CPU devices with a stand-in queue: every run's
-    outcome as on one device, the padding never read, and a run met again (an equal point, a later chunk) not
-    run again."""
+    """LoopRuns (the closed-loop sweep's runs) on 4 forced CPU devices, a queue each, with a stand-in queue
+    program: every run's outcome as on one device, the padding never read, and a run met again (an equal point,
+    a later chunk) not run again."""
     import subprocess
     import sys
 
@@ -97,7 +96,7 @@ def test_loop_runs_deal_runs_over_four_devices_and_run_each_once():
         return json.loads(out.stdout.strip().splitlines()[-1])
 
     one, four = go(1), go(4)
-    assert (one["devices"], four["devices"]) == (1, 4)
+    assert (one["devices"], four["devices"]) == (1, 4) and (one["loop_devices"], four["loop_devices"]) == (1, 4)
     a = np.asarray(four["a"])
     assert a.shape == (1, 5, 7, 4) and np.isfinite(a).all()
     np.testing.assert_array_equal(a, np.asarray(one["a"]))

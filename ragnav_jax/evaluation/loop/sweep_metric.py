@@ -111,21 +111,10 @@ def _judge_runs(st: State, num_true, strict, oracle_m, *, max_steps: int):
 def _judged_runs(le: LoopEpisodes, run_e, cands, est, has, lam, count, *, loop_fn, refill: float, max_steps: int):
     """(Q, 4) `_judge_runs` of Q queued closed-loop runs: episode run_e (Q,) with candidates (Q, G, K), estimates
     (Q, G, K, 2), masks (Q, G, K) and order penalty lam (Q,); the first count[0] are run, the rest is padding.
-    loop_fn: `program.closed_loop` with its static settings (the device eval's compiled one on one device)."""
+    loop_fn: `program.closed_loop` with its static settings (`program.compiled`)."""
     inp = jax.tree.map(lambda x: x[run_e], le.base).replace(cands=cands, est=est, has_est=has)
     st = loop_fn(le.world, inp, le.scene_idx[run_e], le.start[run_e], lam, jnp.float32(refill), count[0])
     return _judge_runs(st, le.num_true[run_e], le.strict[run_e], le.oracle_m[run_e], max_steps=max_steps)
-
-
-def sharded_runs(fn, mesh):
-    """fn(le, run_e, cands, est, has, lam, count) of one device's queue, jitted over a mesh: le replicated, the
-    runs and count (one per device) split along their leading axis, no communication inside."""
-    from jax.sharding import PartitionSpec as P
-
-    from ragnav_jax.evaluation.sharding import AXIS
-
-    # check_vma=False: the loop's carries start as constants and become per-device values (no collective reads them)
-    return jax.jit(jax.shard_map(fn, mesh=mesh, in_specs=(P(), *(P(AXIS),) * 6), out_specs=P(AXIS), check_vma=False))
 
 
 def _deal(x: np.ndarray, slot: np.ndarray, size: int) -> np.ndarray:
@@ -144,23 +133,25 @@ class LoopRuns:
     (most of a sigma x eta grid) share one run, so a sweep runs the distinct (episode, candidates, lambda)
     inputs it meets, each once over all its chunks, and reads the others from the runs it made.
 
-    With a mesh of several devices each call's runs are dealt out over them (run r to device r % n) and every
-    device runs its own queue on eval.batch_size lanes (shard_map: no communication inside the loop), so a
-    run's outcome does not depend on the number of devices either.
+    On several devices each call's runs are dealt out over them (run r to device r % n) and every device runs
+    its own queue on eval.batch_size lanes: the one-device program, dispatched to each device from a thread of
+    its own (XLA's GPU compiler crashed on the same loop as a shard_map over 4 GPUs, 2026-11-27), so a run's
+    outcome does not depend on the number of devices either.
     """
 
-    def __init__(self, fn, le, lanes: int, mesh=None):
-        """fn(le, run_e, cands, est, has, lam, count) -> (Q, 4) outcomes: `_judged_runs` with its settings, or
-        with a mesh `sharded_runs` of it; le: what fn reads besides the runs; lanes: eval.batch_size."""
-        from ragnav_jax.evaluation.sharding import replicate
-
-        self.fn, self.lanes, self.mesh = fn, lanes, mesh
-        self.n, self.q = (mesh.size if mesh is not None else 1), 0
-        self.le = replicate(le, mesh) if mesh is not None else le
+    def __init__(self, fn, le, lanes: int, devices=None):
+        """fn(le, run_e, cands, est, has, lam, count) -> (Q, 4) outcomes of one device's queue (`_judged_runs` with
+        its settings); le: what fn reads besides the runs; lanes: eval.batch_size; devices: where the queues run
+        (default: one queue, on the default device)."""
+        self.fn, self.lanes = fn, lanes
+        self.devices = list(devices) if devices else [None]
+        self.n, self.q = len(self.devices), 0
+        self.le = [le if d is None else jax.device_put(le, d) for d in self.devices]
         self.index: dict[bytes, int] = {}  # a run's inputs -> its row of `results`
         self.results = np.zeros((0, 4), np.float32)
         self.stats = {"episode_runs": 0, "loop_runs": 0, "loop_calls": 0, "loop_s": 0.0, "loop_call_s": [],
-                      "loop_call_runs": []}  # each call's seconds (the first of a queue shape compiles) and runs
+                      "loop_call_runs": [], "loop_devices": self.n}  # each call's seconds (the first of a queue
+        # shape compiles, on each device) and runs
 
     def queue_size(self, runs: int) -> int:
         """Runs per device of one call: 1, 2, 4 or 8 batches of lanes, as few as hold `runs` but never fewer than
@@ -169,23 +160,32 @@ class LoopRuns:
         self.q = max(self.q, self.lanes * min(program.QUEUE_BATCHES, 1 << (-(-per // self.lanes) - 1).bit_length()))
         return self.q
 
+    def _queue(self, d: int, args: list) -> np.ndarray:
+        """Device d's queue: its (Qd, ...) runs and count (1,), run to the end."""
+        dev = self.devices[d]
+        args = [jnp.asarray(a) if dev is None else jax.device_put(a, dev) for a in args]
+        return np.asarray(self.fn(self.le[d], *args))
+
     def _run(self, *runs) -> np.ndarray:
         """(U, 4) outcomes of U new runs (host arrays run_e, cands, est, has, lam with U leading), in calls of at
         most QUEUE_BATCHES batches of lanes per device."""
         import time
-
-        from ragnav_jax.evaluation import sharding
+        from concurrent.futures import ThreadPoolExecutor
 
         U, most, out = len(runs[0]), self.n * self.lanes * program.QUEUE_BATCHES, []
         for lo in range(0, U, most):
             m = min(U - lo, most)
             Qd = self.queue_size(m)
             slot = (np.arange(m) % self.n) * Qd + np.arange(m) // self.n  # run r: device r % n, in run order
-            args = [_deal(x[lo : lo + m], slot, self.n * Qd) for x in runs]
-            args.append(np.bincount(np.arange(m) % self.n, minlength=self.n).astype(np.int32))  # runs per device
-            args = sharding.shard_leading(args, self.mesh) if self.mesh is not None else [jnp.asarray(a) for a in args]
+            full = [_deal(x[lo : lo + m], slot, self.n * Qd) for x in runs]
+            count = np.bincount(np.arange(m) % self.n, minlength=self.n).astype(np.int32)  # runs per device
+            parts = [[x[d * Qd : (d + 1) * Qd] for x in full] + [count[d : d + 1]] for d in range(self.n)]
             t0 = time.perf_counter()
-            res = sharding.to_host(self.fn(self.le, *args))
+            if self.n == 1:
+                res = self._queue(0, parts[0])
+            else:  # one thread a device: each compiles (the first time) and runs its queue while the others do
+                with ThreadPoolExecutor(self.n) as pool:
+                    res = np.concatenate(list(pool.map(self._queue, range(self.n), parts)))
             dt = time.perf_counter() - t0
             self.stats["loop_s"] = round(self.stats["loop_s"] + dt, 3)
             self.stats["loop_calls"] += 1
@@ -295,22 +295,10 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     le, totals, loop, ranking = loop_episodes(cfg, bank, scenes, episodes, embedder, modalities, executor, verifier)
     fl = program.flags_of(cfg, loop.look_cost)
     ex, lanes, mesh = loop.ex, cfg.eval.batch_size, sweep_mesh(cfg)
-    if mesh is not None and mesh.devices.flat[0].platform == "gpu":
-        import sys
-
-        print("sweep --closed-loop: the loop runs on one GPU (XLA's GPU compiler crashed on the loop sharded over "
-              "several, 2026-11-27; README, Sweeps); retrieval stays sharded", file=sys.stderr)
-        mesh = None
-    if mesh is None:
-        fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes), refill=cfg.eval.refill,
-                               max_steps=fl.max_steps)
-    else:
-        loop_fn = functools.partial(program.closed_loop, fl=fl, init=ex.init, advance=ex.advance, look=ex.look_fn,
-                                    lanes=lanes)
-        fn = sharded_runs(functools.partial(_judged_runs, loop_fn=loop_fn, refill=cfg.eval.refill,
-                                            max_steps=fl.max_steps), mesh)
-    runs = LoopRuns(fn, le, lanes, mesh)
-    runs.stats["loop_devices"] = runs.n
+    fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes), refill=cfg.eval.refill,
+                           max_steps=fl.max_steps)  # the device eval's compiled loop
+    devices = list(mesh.devices.flat) if mesh is not None and jax.process_count() == 1 else None
+    runs = LoopRuns(fn, le, lanes, devices)
     cands = jax.jit(functools.partial(_chunk_candidates, outer=tuple(grid.outer), inner=tuple(grid.inner),
                                       ranking=ranking))
     group = np.asarray(le.group, np.float64)
