@@ -57,7 +57,7 @@ def test_init_distributed_reads_its_variables(monkeypatch):
 
 
 _LOOP_RUNS = r"""
-import json, sys
+import json
 import jax, jax.numpy as jnp, numpy as np
 from ragnav_jax.evaluation.loop.sweep_metric import LoopRuns
 

@@ -294,6 +294,12 @@ def batch_sizes(states: list, cfg: Config) -> tuple[int, int, int, int]:
 QUEUE_BATCHES = 8  # a device call queues up to this many batches of episodes on its eval.batch_size lanes
 
 
+def queue_size(n: int, lanes: int) -> int:
+    """Episodes one device call queues for n on `lanes` lanes: 1, 2, 4 or 8 batches, as few as hold n (few
+    shapes, few compilations)."""
+    return lanes * min(QUEUE_BATCHES, 1 << (-(-n // lanes) - 1).bit_length())
+
+
 def run_device(loop, states: list, cfg: Config, progress=None) -> None:
     """Runs `states` (host EpisodeStates, before any leg) on the device program and writes the outcome back
     into them (status, found, declarations, steps, travel, the first plan). eval.batch_size lanes run at once;
@@ -309,7 +315,7 @@ def run_device(loop, states: list, cfg: Config, progress=None) -> None:
     fl = flags_of(cfg, loop.look_cost)
     world = world_of(loop)
     B = min(cfg.eval.batch_size, len(states))
-    Q = B * min(QUEUE_BATCHES, 1 << (-(-len(states) // B) - 1).bit_length())  # 1, 2, 4 or 8 batches: few shapes
+    Q = queue_size(len(states), B)
     prog = compiled(loop.ex, fl, B)
     for c0 in range(0, len(states), Q):
         chunk = states[c0 : c0 + Q]

@@ -156,8 +156,7 @@ class LoopRuns:
     def queue_size(self, runs: int) -> int:
         """Runs per device of one call: 1, 2, 4 or 8 batches of lanes, as few as hold `runs` but never fewer than
         an earlier call's (a sweep's later chunks, with few new runs, reuse its compilation)."""
-        per = -(-runs // self.n)
-        self.q = max(self.q, self.lanes * min(program.QUEUE_BATCHES, 1 << (-(-per // self.lanes) - 1).bit_length()))
+        self.q = max(self.q, program.queue_size(-(-runs // self.n), self.lanes))
         return self.q
 
     def _queue(self, d: int, args: list) -> np.ndarray:
