@@ -465,7 +465,7 @@ class SweepConfig:
 
     axes: SweepAxes = dataclasses.field(default_factory=SweepAxes)
     variants: tuple[str, ...] = ("ragnav",)  # names from retrieval/params.py ABLATIONS, same batched call
-    chunk_size: int = 256  # grid points per compiled call (and per checkpoint)
+    chunk_size: int = 256  # grid points per device per compiled call (a chunk, and checkpoint, has n times more)
     checkpoint: bool = True  # save each finished chunk (orbax) so a killed sweep resumes where it stopped
     shard: bool = True  # split each chunk's grid points over all devices (jax.sharding)
     heatmap: tuple[str, str] = ("sigma", "eta")  # axes of the heatmaps (x, y); other axes: best value

@@ -3,6 +3,7 @@
 import json
 import signal
 import time
+from types import SimpleNamespace
 
 import jax
 import numpy as np
@@ -43,6 +44,17 @@ def test_grid_equals_points_one_by_one(tiny_run, batch, chunk):
         ref = np.asarray(ONE(b, jax.tree.map(lambda x, p=p: x[p], grid.params)))
         np.testing.assert_array_equal(sums["retrieval_accuracy"][p], ref, err_msg=f"point {p}: {grid.points[p]}")
     assert stats["chunks"] == -(-6 // chunk) and stats["combos_per_chunk"] == chunk
+
+
+@pytest.mark.parametrize("devices", [1, 2, 4])
+def test_chunk_holds_a_one_device_chunk_per_device(devices):
+    """sweep.chunk_size is per device: n devices take n one-device chunks per call, never more than the grid,
+    always a multiple of the devices."""
+    grid, mesh = SimpleNamespace(variants=("a", "b"), num_combos=50), SimpleNamespace(size=devices)
+    assert S.chunk_shape(grid, 8, mesh) == 4 * devices
+    assert S.chunk_shape(grid, 1, mesh) == devices  # at least one combination a device
+    big = S.chunk_shape(grid, 80, mesh)
+    assert big % devices == 0 and 50 <= big < 50 + devices
 
 
 def test_grid_agrees_with_evaluate_retrieval(tiny_run, batch, apartment):

@@ -231,10 +231,11 @@ def sweep_fingerprint(grid: Grid, metrics: Sequence[GridMetric], chunk: int) -> 
 
 
 def chunk_shape(grid: Grid, chunk_size: int, mesh=None) -> int:
-    """Combinations per compiled call: chunk_size / variants (at least 1, at most all), rounded up to a
-    multiple of the devices."""
+    """Combinations per compiled call: chunk_size / variants (at least 1) on each device, at most all, rounded
+    up to a multiple of the devices. Each device gets a one-device chunk's work whatever their number: a
+    closed-loop call with fewer runs per device lasts about as long (its longest episode sets the time)."""
     n = mesh.size if mesh is not None else 1
-    c = min(max(chunk_size // len(grid.variants), 1), grid.num_combos)
+    c = min(max(chunk_size // len(grid.variants), 1) * n, grid.num_combos)
     return -(-c // n) * n
 
 
