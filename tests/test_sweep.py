@@ -53,7 +53,7 @@ def test_chunk_holds_a_one_device_chunk_per_device(devices):
     grid, mesh = SimpleNamespace(variants=("a", "b"), num_combos=50), SimpleNamespace(size=devices)
     assert S.chunk_shape(grid, 8, mesh) == 4 * devices
     assert S.chunk_shape(grid, 1, mesh) == devices  # at least one combination a device
-    big = S.chunk_shape(grid, 80, mesh)
+    big = S.chunk_shape(grid, 200, mesh)
     assert big % devices == 0 and 50 <= big < 50 + devices
 
 
