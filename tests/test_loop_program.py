@@ -140,7 +140,7 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment, both):
     """The sweep's closed-loop metric at the configured point (device candidate ranking, device judging) counts
     the successes that `ragnav eval`'s device engine (host ranking, host rows) gets, with its compiled loop;
     lambda is a grid axis. A point that ranks every candidate alike (here a sigma 0.01% away, in a later chunk)
-    reads the runs it shares instead of running them again."""
+    reads the runs it shares instead of running them again; the later chunk's padding is neither run nor counted."""
     from ragnav_jax.config import SweepAxes
     from ragnav_jax.evaluation.loop.sweep_metric import closed_loop_metrics
     from ragnav_jax.evaluation.sweep import evaluate_grid, make_grid
@@ -151,14 +151,14 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment, both):
     mods = tuple(sorted({e.modality for e in episodes}))
     sigma = cfg.retrieval.sigma
     sweep = dataclasses.replace(cfg.sweep, axes=SweepAxes(sigma=(sigma, 0.25 * sigma, 1.0001 * sigma), lam=(cfg.planning.lam,)),
-                                variants=("ragnav",), chunk_size=1)
+                                variants=("ragnav",), chunk_size=2)
     c = dataclasses.replace(cfg, sweep=sweep)
     grid = make_grid(c.sweep, params_from_config(c.retrieval), c.planning.lam)
     metrics = closed_loop_metrics(c, bank, [apartment], episodes, emb, grid, mods, executor=ex, verifier=ver)
     progs = [v for k, v in ex.cache.items() if k[0] == "device_program"]
     before = sum(p._cache_size() for p in progs)
-    sums, stats = evaluate_grid(metrics, grid, chunk_size=1)
-    assert stats["chunks_computed"] == 3
+    sums, stats = evaluate_grid(metrics, grid, chunk_size=2)
+    assert stats["chunks_computed"] == 2
     rows, _ = _rows(setup, apartment, "ragnav", "device", episodes)
     want = [sum(r["success"] for r in rows if r["modality"] == m) for m in mods]
     assert sums["nav_success"][0].tolist() == want

@@ -77,14 +77,15 @@ devices = jax.devices() if jax.device_count() > 1 else None
 runs = LoopRuns(jax.jit(fn), {"w": jnp.float32(10.0)}, lanes=2, devices=devices)
 a = runs(cands, est, has, lam)
 b = runs(cands[:, :2], est[:, :2], has[:, :2], lam[:2])  # a later chunk of points already met
-print(json.dumps({"devices": jax.device_count(), "a": a.tolist(), "b": b.tolist(), **runs.stats}))
+c = runs(cands[:, :3], est[:, :3], has[:, :3], np.asarray([5, 6, 7], np.float32), 1)  # one point, two of padding
+print(json.dumps({"devices": jax.device_count(), "a": a.tolist(), "b": b.tolist(), "c": c.tolist(), **runs.stats}))
 """
 
 
 def test_loop_runs_deal_runs_over_four_devices_and_run_each_once():
     """LoopRuns (the closed-loop sweep's runs) on 4 forced CPU devices, a queue each, with a stand-in queue
-    program: every run's outcome as on one device, the padding never read, and a run met again (an equal point,
-    a later chunk) not run again."""
+    program: every run's outcome as on one device, the queue's padding never read, a run met again (an equal
+    point, a later chunk) not run again, and a chunk's padded points neither run nor counted."""
     import subprocess
     import sys
 
@@ -101,6 +102,9 @@ def test_loop_runs_deal_runs_over_four_devices_and_run_each_once():
     assert a.shape == (1, 5, 7, 4) and np.isfinite(a).all()
     np.testing.assert_array_equal(a, np.asarray(one["a"]))
     np.testing.assert_array_equal(np.asarray(four["b"]), a[:, :2])
-    assert four["episode_runs"] == one["episode_runs"] == 5 * 7 + 2 * 7
-    assert four["loop_runs"] == one["loop_runs"] == 4 * 7  # point 3 repeats point 0; the later chunk, 0 and 1
+    c = np.asarray(four["c"])
+    assert c.shape == (1, 1, 7, 4)
+    np.testing.assert_array_equal(c[0, 0, :, 0], np.arange(7) * 10.0 + 5)
+    assert four["episode_runs"] == one["episode_runs"] == 5 * 7 + 2 * 7 + 7
+    assert four["loop_runs"] == one["loop_runs"] == 4 * 7 + 7  # point 3 repeats 0; the later chunk, 0 and 1
     np.testing.assert_array_equal(a[0, :, :, 0], np.arange(7)[None] * 10.0 + np.asarray([0, 0, 1e4, 0, 0])[:, None])

@@ -126,5 +126,5 @@ def plan_metric(batch: RetrievalBatch, meta: BatchMeta, bank, scenes: Sequence, 
     pe, totals = plan_episodes(batch, meta, bank, scenes)
     fp = _digest((batch, pe))
     fn = _grid_plan(tuple(grid.outer), tuple(grid.inner))
-    return GridMetric("plan_success", lambda params, lam: fn(batch, pe, params, lam), totals, meta.modalities, fp,
+    return GridMetric("plan_success", lambda params, lam, real: fn(batch, pe, params, lam), totals, meta.modalities, fp,
                       uses_lam=True)

@@ -118,8 +118,9 @@ def make_grid(sweep: SweepConfig, base: RetrievalParams, lam: float = 0.0) -> Gr
 class GridMetric:
     """A metric of a chunk of grid points computed in one batched call.
 
-    fn(params, lam (C,)) -> sums (V, C, G) over the modalities, params as Grid.chunk gives them (outer
-    fields (V,), inner fields (C,)); the table reports sums / totals.
+    fn(params, lam (C,), real) -> sums (V, C, G) over the modalities, params as Grid.chunk gives them (outer
+    fields (V,), inner fields (C,)), the first `real` of the C combinations grid points and the rest padding
+    (the last repeated); the table reports sums / totals.
     """
 
     name: str  # column of the table, e.g. "retrieval_accuracy"
@@ -173,7 +174,7 @@ def retrieval_metric(batch: RetrievalBatch, meta: BatchMeta, grid: Grid, mesh=No
     fp = _digest(batch)
     if mesh is not None:
         batch = sharding.replicate(batch, mesh)
-    return GridMetric("retrieval_accuracy", lambda params, lam: grid_correct(batch, params, grid.outer, grid.inner),
+    return GridMetric("retrieval_accuracy", lambda params, lam, real: grid_correct(batch, params, grid.outer, grid.inner),
                       meta.totals, meta.modalities, fp)
 
 
@@ -274,7 +275,7 @@ def evaluate_grid(
                 for f, x in ((f, getattr(params, f)) for f in FIELDS)})
             lam = sharding.shard_leading(lam, mesh)
         t0 = time.perf_counter()
-        out = {m.name: m.fn(params, lam) for m in metrics}
+        out = {m.name: m.fn(params, lam, hi - lo) for m in metrics}
         out = {k: sharding.to_host(v)[:, : hi - lo] for k, v in out.items()}  # (V, c, G)
         times.append(time.perf_counter() - t0)
         parts[i] = out

@@ -193,10 +193,13 @@ class LoopRuns:
             out.append(res[slot])
         return np.concatenate(out) if out else np.zeros((0, 4), np.float32)
 
-    def __call__(self, cands, est, has, lam) -> np.ndarray:
-        """(V, C, E, 4) outcomes of every episode at a chunk's points: cands, est, has (V, C, E, ...) as
-        `_chunk_candidates` gives them, lam (C,). Runs only the inputs no earlier call met."""
-        cands, est, has = np.asarray(cands), np.asarray(est, np.float32), np.asarray(has)
+    def __call__(self, cands, est, has, lam, real: int | None = None) -> np.ndarray:
+        """(V, real, E, 4) outcomes of every episode at a chunk's points: cands, est, has (V, C, E, ...) as
+        `_chunk_candidates` gives them, lam (C,), of which the first `real` are grid points (default all) and the
+        rest padding, neither run nor counted. Runs only the inputs no earlier call met."""
+        real = len(lam) if real is None else real
+        cands, est, has = (np.asarray(x)[:, :real] for x in (cands, est, has))
+        lam, est = np.asarray(lam)[:real], est.astype(np.float32)
         V, C, E = cands.shape[:3]
         R = V * C * E
         run_e = np.broadcast_to(np.arange(E, dtype=np.int32), (V, C, E)).reshape(R)
@@ -304,9 +307,9 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     last: dict = {}
 
     def part(name):
-        def f(params, lam):
+        def f(params, lam, real):
             if "args" not in last or last["args"][0] is not params or last["args"][1] is not lam:  # a new chunk
-                out = runs(*cands(le, params), np.asarray(lam))  # (V, C, E, 4)
+                out = runs(*cands(le, params), np.asarray(lam), real)  # (V, real, E, 4)
                 last.update(args=(params, lam), out=dict(zip(NAMES, np.einsum("vcek,em->kvcm", out, group))))
             return last["out"][name]
 
