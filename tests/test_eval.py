@@ -26,7 +26,8 @@ EPISODES = example_scene_path().parent / "episodes.jsonl"
 
 @pytest.fixture(scope="module")
 def setup(apartment):
-    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=8"])
+    # the settings of test_loop_program.py's module: its host-engine programs come from the shared compilation cache
+    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])
     stream = synthetic_stream(apartment)
     emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
     bank, _ = build_bank([apartment], [stream], cfg, embedder=emb)
@@ -569,7 +570,7 @@ def test_a_new_episode_count_in_the_same_slot_bucket_compiles_nothing(setup, apa
 
     cfg, bank, streams, emb, ex = setup
     base = load_episodes(EPISODES, [apartment])
-    many = [dataclasses.replace(e, id=f"{e.id}-{k}") for k in range(6) for e in base]
+    many = [dataclasses.replace(e, id=f"{e.id}-{k}") for k in range(4) for e in base]
     compiles = []
 
     def on(event, dur, **kw):
@@ -578,7 +579,7 @@ def test_a_new_episode_count_in_the_same_slot_bucket_compiles_nothing(setup, apa
 
     monitoring.register_event_duration_secs_listener(on)
     counts, slots = [], []
-    for n in (len(many), len(many) - 4):  # 36 and 32 episodes: one slot bucket, full batches of 8 only
+    for n in (len(many), len(many) - 4):  # 24 and 20 episodes: one slot bucket, full batches of 4 only
         compiles.clear()
         cands_rows, _ = evaluate_navigation(bank, [apartment], many[:n], emb, cfg, "ragnav", streams=streams,
                                             executor=ex)

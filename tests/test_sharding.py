@@ -34,8 +34,12 @@ def test_sweep_on_four_devices_equals_one_device(tiny_run, tmp_path):
                              env={"XLA_FLAGS": "--xla_force_host_platform_device_count=4"})
     text, _ = proc.communicate(timeout=300)
     assert proc.returncode == 0, text
-    assert json.loads((tmp_path / "four" / "summary.json").read_text())["devices"] == 4
-    assert json.loads((tmp_path / "one" / "summary.json").read_text())["devices"] == 1
+    four = json.loads((tmp_path / "four" / "summary.json").read_text())
+    one = json.loads((tmp_path / "one" / "summary.json").read_text())
+    assert (four["devices"], one["devices"]) == (4, 1)
+    # sweep.chunk_size=12 is per device: 4 of the 6 combinations a chunk on one device (2 chunks), all 6 (padded
+    # to 8) in one chunk on four
+    assert (one["chunks"], one["combos_per_chunk"], four["chunks"], four["combos_per_chunk"]) == (2, 4, 1, 8)
     pd.testing.assert_frame_equal(pd.read_csv(tmp_path / "one" / "sweep.csv"), pd.read_csv(tmp_path / "four" / "sweep.csv"))
 
 

@@ -46,7 +46,7 @@ class Profile:
     e2e_embedder: str = "hashing"  # MiniLM inference would dominate the CPU figures; hashing keeps stages visible
     e2e_explore_steps: int | None = None  # explore.max_steps override (None: the preset's budget)
     e2e_explore_batch: int | None = 1  # explore.batch_size: 1 on CPU (one compile for every scene count)
-    e2e_execute_episodes: int = 8  # episodes run through the closed loop (execute stage)
+    e2e_execute_episodes: int = 8  # episodes run through the closed loop (execute stage; 0 skips it)
     # sweep: grid points of sigma x eta (x lambda where navigation metrics exist)
     sweep_points: int = 100
     sweep_scenes: int = 2

@@ -328,9 +328,11 @@ def run_pipeline(cfg, p: Profile, log, reuse=None, execute: bool = True, plan: b
                 failed += 1
     st["plan"].update({"instructions": len(todo), "failed": failed,
                        "per_instruction_s": st["plan"]["wall_s"] / max(len(todo), 1)})
+    skip = ("skipped in this run (execute is timed in the scene-count runs)" if not execute else
+            "skipped (e2e_execute_episodes=0)" if p.e2e_execute_episodes < 1 else None)
     try:
-        if not execute:
-            raise Unavailable("skipped in this run (execute is timed in the scene-count runs)")
+        if skip:
+            raise Unavailable(skip)
         evaluate_navigation = execute_stage()
         runs = episodes[:: max(1, len(episodes) // max(p.e2e_execute_episodes, 1))][: p.e2e_execute_episodes]
         streams = {s.name: r.stream for s, r in zip(scenes, art["explored"])}
@@ -339,7 +341,7 @@ def run_pipeline(cfg, p: Profile, log, reuse=None, execute: bool = True, plan: b
         st["execute"].update({"episodes": len(runs), "per_episode_s": st["execute"]["wall_s"] / max(len(runs), 1),
                               "success_rate": summ_ex.get("success_rate")})
     except Unavailable as e:
-        st["execute"] = {"status": "skipped" if not execute else "not available", "reason": str(e)}
+        st["execute"] = {"status": "skipped" if skip else "not available", "reason": str(e)}
     except Exception as e:  # the closed loop is another engineer's work in progress: record, go on
         st["execute"] = {"status": "failed", "reason": f"{type(e).__name__}: {e}"}
     summ = memory_summary(bank)
