@@ -36,7 +36,8 @@ def test_bench_rejects_bad_arguments(tmp_path, capsys):
 @pytest.mark.slow
 def test_quick_bench_reports_every_comparison(tmp_path):
     out = tmp_path / "bench"
-    assert main(["bench", "--out", str(out), "--quick", "--scale", "0.05", "--quiet", "--only", *PEER_SECTIONS]) == 0
+    assert main(["bench", "--out", str(out), "--quick", "--scale", "0.05", "--quiet", "--set", "sim_batches=4",  # one MJX compile
+                 "--only", *PEER_SECTIONS]) == 0
     doc = json.loads((out / "bench.json").read_text())
     assert {"cpu_model", "cpu_count", "memory_gb", "jax_devices"} <= set(doc["machine"])
     assert doc["packages"]["jax"] != "not installed"
