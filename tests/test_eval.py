@@ -26,7 +26,7 @@ EPISODES = example_scene_path().parent / "episodes.jsonl"
 
 @pytest.fixture(scope="module")
 def setup(apartment):
-    # the settings of test_loop_program.py's module: its host-engine programs come from the shared compilation cache
+    # 4 lanes, as in test_loop_program.py's module: fewer episodes fill whole batches (the bucket test below)
     cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])
     stream = synthetic_stream(apartment)
     emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
