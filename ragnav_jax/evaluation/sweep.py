@@ -198,7 +198,7 @@ class ChunkStore:
             except (OSError, ValueError, AttributeError):  # unreadable, not text, not JSON, not an object
                 old = None
             if old != fingerprint:
-                raise UserError(f"{self.folder}: holds checkpoints of a different sweep (grid, chunk size or data "
+                raise UserError(f"{self.folder}: holds checkpoints of a different sweep (grid, chunk size, device count or data "
                                 "changed); pass --fresh to discard them or choose another --out")
         self.folder.mkdir(parents=True, exist_ok=True)
         write_json(tag, {"fingerprint": fingerprint})
