@@ -17,7 +17,9 @@ progress and metres driven; the sweep table divides them by the episodes of each
 from __future__ import annotations
 
 import functools
+import time
 from collections.abc import Sequence
+from concurrent.futures import ThreadPoolExecutor
 
 import jax
 import jax.numpy as jnp
@@ -168,9 +170,6 @@ class LoopRuns:
     def _run(self, *runs) -> np.ndarray:
         """(U, 4) outcomes of U new runs (host arrays run_e, cands, est, has, lam with U leading), in calls of at
         most QUEUE_BATCHES batches of lanes per device."""
-        import time
-        from concurrent.futures import ThreadPoolExecutor
-
         U, most, out = len(runs[0]), self.n * self.lanes * program.QUEUE_BATCHES, []
         for lo in range(0, U, most):
             m = min(U - lo, most)
@@ -180,11 +179,8 @@ class LoopRuns:
             count = np.bincount(np.arange(m) % self.n, minlength=self.n).astype(np.int32)  # runs per device
             parts = [[x[d * Qd : (d + 1) * Qd] for x in full] + [count[d : d + 1]] for d in range(self.n)]
             t0 = time.perf_counter()
-            if self.n == 1:
-                res = self._queue(0, parts[0])
-            else:  # one thread a device: each compiles (the first time) and runs its queue while the others do
-                with ThreadPoolExecutor(self.n) as pool:
-                    res = np.concatenate(list(pool.map(self._queue, range(self.n), parts)))
+            with ThreadPoolExecutor(self.n) as pool:  # a thread a device: each compiles (the first time) and runs
+                res = np.concatenate(list(pool.map(self._queue, range(self.n), parts)))  # its queue as the others do
             dt = time.perf_counter() - t0
             self.stats["loop_s"] = round(self.stats["loop_s"] + dt, 3)
             self.stats["loop_calls"] += 1
