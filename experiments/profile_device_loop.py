@@ -62,6 +62,8 @@ def main(argv=None) -> int:
     ap.add_argument("--steps", type=int, default=100)
     ap.add_argument("--lanes", default="", help="comma-separated lane counts: the whole closed_loop is also timed "
                     "with the --batch episodes queued on each (eval.batch_size)")
+    ap.add_argument("--reflect", default="0", help="comma-separated eval.reflect_lanes sizes the whole closed_loop "
+                    "is timed at, on each lane count (0: every lane)")
     ap.add_argument("--no-phases", action="store_true", help="time only the whole closed_loop")
     a = ap.parse_args(argv)
     p = PROFILES["quick"].replace(e2e_explore_steps=None, e2e_explore_batch=None)
@@ -124,15 +126,17 @@ def main(argv=None) -> int:
         phases["drive_steps_taken_mean"] = float(np.asarray(res[f"drive_{a.steps}_steps"]["out"][0].steps).mean())
     final = None
     for lanes in [None] + [int(x) for x in a.lanes.split(",") if x]:
-        prog = program.compiled(ex, fl, lanes)
-        key = "closed_loop_refill_1" + ("" if lanes is None else f"_lanes_{lanes}")
-        res[key] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
-        same = None if final is None else all(bool(np.array_equal(x, y)) for x, y in zip(
-            jax.tree.leaves(final), jax.tree.leaves(res[key]["out"])))
-        final = res[key]["out"] if final is None else final
-        print(key, {k: round(v, 3) for k, v in res[key].items() if k != "out"}, "same State:", same, flush=True)
-        if same is not None:
-            phases[key + "_same_state"] = same
+        for r in [int(x) for x in a.reflect.split(",")]:
+            prog = program.compiled(ex, fl._replace(reflect_lanes=r), lanes)
+            key = ("closed_loop_refill_1" + ("" if lanes is None else f"_lanes_{lanes}")
+                   + ("" if r == 0 else f"_reflect_{r}"))
+            res[key] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
+            same = None if final is None else all(bool(np.array_equal(x, y)) for x, y in zip(
+                jax.tree.leaves(final), jax.tree.leaves(res[key]["out"])))
+            final = res[key]["out"] if final is None else final
+            print(key, {k: round(v, 3) for k, v in res[key].items() if k != "out"}, "same State:", same, flush=True)
+            if same is not None:
+                phases[key + "_same_state"] = same
     out = {"device": str(jax.devices()[0].device_kind), "method": a.method, "batch": E, "distinct": len(distinct),
            "scenes": a.scenes, "host": host,
            "phases": {k: {"median_s": v["median_s"], "compile_s": v["compile_s"]} for k, v in res.items()},

@@ -29,7 +29,8 @@ def _with(cfg, **kw):
 
 @pytest.fixture(scope="module")
 def setup(apartment):
-    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])  # 6 episodes on 4 lanes: 2 queue
+    # 6 episodes on 4 lanes (2 queue), each reflection serving 2 lanes gathered from the 4
+    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4", "eval.reflect_lanes=2"])
     stream = synthetic_stream(apartment)
     emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
     bank, _ = build_bank([apartment], [stream], cfg, embedder=emb)
@@ -173,8 +174,9 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment, both):
 
 
 def test_refill_changes_speed_not_rows(setup, apartment, both):
-    """eval.refill (lanes that ended a leg start the next while the others drive on) gives the same rows as
-    waiting for every leg of the batch, with the same compiled program."""
+    """eval.refill (lanes that ended a leg start the next while the others drive on; here one lane at a time)
+    gives the same rows as waiting for 2 lanes to need a reflection (eval.reflect_lanes), with the same compiled
+    program."""
     out, _ = both
     progs = [v for k, v in setup[3].cache.items() if k[0] == "device_program"]
     before = sum(p._cache_size() for p in progs)

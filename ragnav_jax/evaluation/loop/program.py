@@ -7,9 +7,10 @@ candidates, verdict and search tables, the memory's paths, occupancy grids and l
 and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
 makes the rows). In between, each iteration of the while_loop reflects on the episodes whose leg ended
 (look-around with MJX camera visibility -> `step.after_leg` -> budget -> a lane whose episode ended takes the
-next queued one -> `step.next_leg` -> waypoints, all vmapped and masked) and then drives (`Executor.advance`, a
-while_loop over MJX control steps) until a share `eval.refill` of the legs going have ended, so short legs do
-not wait for the batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
+next queued one -> `step.next_leg` -> waypoints, all vmapped and masked over `eval.reflect_lanes` lanes gathered
+from the batch) and then drives (`Executor.advance`, a while_loop over MJX control steps) until a share
+`eval.refill` of the lanes (at most `eval.reflect_lanes`) need a reflection, so short legs do not wait for the
+batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
 data (`Inputs`), the settings static `Flags`, the order penalty lambda an array: a sweep over it, and every
 method, reuse one compilation.
 
@@ -52,7 +53,8 @@ def flags_of(cfg: Config, look_cost: int) -> Flags:
     return Flags(retries=ev.retries, max_steps=ev.max_steps, leg_max_steps=ev.leg_max_steps, look_cost=look_cost,
                  found_radius=ev.found_radius, approach_gap=ev.approach_gap, robot_radius=sim.robot_radius,
                  need=sim.robot_radius + GRID_MARGIN_M, tight=sim.robot_radius + TIGHT_GAP_M,
-                 solver=cfg.planning.solver, search_iters=cfg.planning.local_search_iters, path_points=ev.path_points)
+                 solver=cfg.planning.solver, search_iters=cfg.planning.local_search_iters, path_points=ev.path_points,
+                 reflect_lanes=ev.reflect_lanes)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -175,6 +177,11 @@ def _take(tree, idx):
     return jax.tree.map(lambda x: x[idx], tree)
 
 
+def _put(tree, idx, sub):
+    """tree with rows idx (distinct) replaced by sub's."""
+    return jax.tree.map(lambda x, y: x.at[idx].set(y, unique_indices=True), tree, sub)
+
+
 def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, count=None, *, fl: Flags, init,
                 advance, look, lanes: int | None = None) -> State:
     """Runs every episode of a queue to its end on `lanes` lanes. inp, scene_idx (Q,) executor scene, start_pose
@@ -182,16 +189,18 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
     refill () eval.refill; count () episodes of the queue to run (the rest is padding; default Q); lanes
     (static) episodes run at once (default Q). Returns the final State of every queued episode (Q leading).
 
-    Each iteration reflects on every lane whose leg ended (look-around, `step.after_leg`, the budget), hands
-    each lane whose episode ended the next episode of the queue (its first plan and MJX state), gives every
-    free lane its next leg (`step.next_leg`, waypoints), then drives (`advance`) until refill * lanes legs
-    have ended, or all that are going where fewer are: lanes do not wait for the batch's longest leg (1.0:
-    every leg ends first), nor for its longest episode while the queue lasts. A reflection costs every lane
-    however few it serves, so the share is of the lanes, not of the legs going. An episode's legs and steps
-    do not depend on its lane, on when it was loaded or on the share."""
+    Each iteration reflects on up to K = fl.reflect_lanes lanes (0: every lane) that need it, gathered into a
+    batch of K: the end of a lane's leg (look-around, `step.after_leg`, the budget), the next episode of the
+    queue where its episode ended (its first plan and MJX state), its next leg (`step.next_leg`, waypoints).
+    Then it drives (`advance`) until min(refill * lanes, K) lanes need a reflection, or every leg has ended:
+    lanes do not wait for the batch's longest leg (refill 1.0 with K = lanes: every leg ends first), nor for
+    its longest episode while the queue lasts. A reflection costs its K lanes however few of them need it,
+    so both are counts of lanes, not of the legs going. An episode's legs and steps do not depend on its lane,
+    on when it was loaded, on the share or on K."""
     N, O = world.pos.shape[1], world.known.shape[1]
     Q = inp.b.shape[0]
     L = Q if lanes is None else min(lanes, Q)
+    K = L if fl.reflect_lanes <= 0 else min(fl.reflect_lanes, L)  # lanes one reflection serves
     count = jnp.int32(Q) if count is None else jnp.asarray(count, jnp.int32)
     first = initial_state(inp, lam, world, fl, N, O)  # (Q) every queued episode's first plan
     start_d = init(scene_idx, start_pose)  # (Q) and its MJX state at the start pose
@@ -205,7 +214,7 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
     out = jax.tree.map(lambda x: jnp.zeros((Q + L, *x.shape[1:]), x.dtype), st)  # row Q + lane: a lane's scratch
     in_ep = (0, 0, None, 0, 0)
 
-    def write(out, st, ep):
+    def write(out, st, ep, lane):
         """Every ended episode's state into its queue row (each lane writes a row of its own: no collisions)."""
         row = jnp.where(st.done, ep, Q + lane)
         return jax.tree.map(lambda o, x: o.at[row].set(x, unique_indices=True), out, st)
@@ -220,9 +229,10 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
         drv = drv.replace(d=_select(take, _take(start_d, ep), drv.d))
         return st, drv, ep, nxt + jnp.sum(take)
 
-    def reflect(st, drv, arrived, going, pending, ep, nxt, out):
+    def reflect(st, drv, arrived, going, pending, ep, nxt, out, lane):
         """Lanes not driving: the end of their leg (`pending`), a new episode where theirs ended, then their next
-        leg. Returns (st, drv, pending, ep, nxt, out)."""
+        leg; every argument but nxt and out has the reflected lanes' leading axis, `lane` their lane numbers.
+        Returns (st, drv, pending, ep, nxt, out)."""
         li, sidx, lm = _take(inp, ep), scene_idx[ep], lam[ep]
         pose = drv.d.qpos[:, :3]
         visible, _ = look(sidx, drv.d)
@@ -238,7 +248,7 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
         st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
                         status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
                         leg_kind=jnp.where(over, NONE, st.leg_kind))
-        out = write(out, st, ep)
+        out = write(out, st, ep, lane)
         st, drv, ep, nxt = jax.lax.cond(jnp.any(st.done) & (nxt < count), load, lambda a: a, (st, drv, ep, nxt))
         li, lm = _take(inp, ep), lam[ep]
         pose = drv.d.qpos[:, :3]
@@ -255,16 +265,24 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
         return jnp.any(~c[0].done) | (c[6] < count)
 
     def body(c):
-        st, drv, arrived, going, pending, ep, nxt, out = c
-        st, drv, pending, ep, nxt, out = reflect(st, drv, arrived, going, pending, ep, nxt, out)
-        keep = jnp.maximum(jnp.sum(pending) - jnp.ceil(refill * L).astype(jnp.int32), 0)
+        st, drv, arrived, going, pending, ep, nxt, out, it = c
+        # K lanes that need a reflection, gathered into a batch of K (a reflection costs K lanes, not L; a lane
+        # chosen that needs none is left as it is), round robin among those that need one so none waits for ever
+        needs = ~going & (pending | ~st.done | (nxt < count))
+        idx = jnp.argsort(jnp.where(needs, 0, L) + (lane - it * K) % L)[:K]
+        sub = reflect(*_take((st, drv, arrived, going, pending, ep), idx), nxt, out, idx)
+        (st, drv, pending, ep), nxt, out = _put((st, drv, pending, ep), idx, sub[:4]), sub[4], sub[5]
+        unserved = needs.at[idx].set(False, unique_indices=True)
+        # drive until `share` lanes need a reflection: legs in progress end, joining those still unserved
+        share = jnp.minimum(jnp.ceil(refill * L).astype(jnp.int32), K)
+        keep = jnp.maximum(jnp.sum(pending & ~unserved) + jnp.sum(unserved) - share, 0)
         drv, arrived, going = advance(scene_idx[ep], drv, keep)
-        return st, drv, arrived, going, pending, ep, nxt, out
+        return st, drv, arrived, going, pending, ep, nxt, out, it + 1
 
     z = jnp.zeros(L, bool)
-    c = (st, drv, jnp.ones(L, bool), z, z, ep, jnp.minimum(jnp.int32(L), count), out)
-    st, _, _, _, _, ep, _, out = jax.lax.while_loop(cond, body, c)
-    return jax.tree.map(lambda x: x[:Q], write(out, st, ep))
+    c = (st, drv, jnp.ones(L, bool), z, z, ep, jnp.minimum(jnp.int32(L), count), out, jnp.int32(0))
+    st, _, _, _, _, ep, _, out, _ = jax.lax.while_loop(cond, body, c)
+    return jax.tree.map(lambda x: x[:Q], write(out, st, ep, lane))
 
 
 def compiled(ex, fl: Flags, lanes: int | None = None):
