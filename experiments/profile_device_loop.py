@@ -2,15 +2,15 @@
 at one batch size, next to the whole program.
 
     python experiments/profile_device_loop.py --out DIR [--scenes 4] [--distinct 128] [--batch 16384] \
-        [--method oracle] [--steps 100] [--lanes 4096,8192] [--no-phases]
+        [--method oracle] [--steps 100] [--lanes 4096,8192] [--refill 1.0,0.125] [--no-phases]
 
 The paper preset's first --scenes scenes are generated, explored and given a memory (hashing embedder), the
 method's evaluate_navigation runs on --distinct episodes with eval.engine=device, and the states it hands to
 `loop.program.run_device` are tiled to --batch. Then, each jitted alone on that batch (median of 3 after a
 first, compiling call): the initial plan, `step.next_leg`, `step.leg_waypoints`, the look-around, `step.after_leg`
 (all vmapped, from the start pose), --steps control steps of driving (`Executor.advance`), and the whole
-`closed_loop` at eval.refill 1.0 (all --batch episodes at once, then queued on each of --lanes). Writes
-DIR/profile.json; absolute times only mean something on a GPU.
+`closed_loop` at each --refill share (all --batch episodes at once, then queued on each of --lanes; first call
+and one more). Writes DIR/profile.json; absolute times only mean something on a GPU.
 """
 
 from __future__ import annotations
@@ -62,8 +62,8 @@ def main(argv=None) -> int:
     ap.add_argument("--steps", type=int, default=100)
     ap.add_argument("--lanes", default="", help="comma-separated lane counts: the whole closed_loop is also timed "
                     "with the --batch episodes queued on each (eval.batch_size)")
-    ap.add_argument("--reflect", default="0", help="comma-separated eval.reflect_lanes sizes the whole closed_loop "
-                    "is timed at, on each lane count (0: every lane)")
+    ap.add_argument("--refill", default="1.0", help="comma-separated eval.refill shares (of the lanes one reflection "
+                    "serves) the whole closed_loop is timed at, on each lane count")
     ap.add_argument("--no-phases", action="store_true", help="time only the whole closed_loop")
     a = ap.parse_args(argv)
     p = PROFILES["quick"].replace(e2e_explore_steps=None, e2e_explore_batch=None)
@@ -126,11 +126,10 @@ def main(argv=None) -> int:
         phases["drive_steps_taken_mean"] = float(np.asarray(res[f"drive_{a.steps}_steps"]["out"][0].steps).mean())
     final = None
     for lanes in [None] + [int(x) for x in a.lanes.split(",") if x]:
-        for r in [int(x) for x in a.reflect.split(",")]:
-            prog = program.compiled(ex, fl._replace(reflect_lanes=r), lanes)
-            key = ("closed_loop_refill_1" + ("" if lanes is None else f"_lanes_{lanes}")
-                   + ("" if r == 0 else f"_reflect_{r}"))
-            res[key] = timed(prog, world, inp, sidx, start, lam, jnp.float32(1.0), repeats=1)
+        for r in [float(x) for x in a.refill.split(",")]:
+            prog = program.compiled(ex, fl._replace(refill=r), lanes)
+            key = f"closed_loop_refill_{r:g}" + ("" if lanes is None else f"_lanes_{lanes}")
+            res[key] = timed(prog, world, inp, sidx, start, lam, repeats=1)
             same = None if final is None else all(bool(np.array_equal(x, y)) for x, y in zip(
                 jax.tree.leaves(final), jax.tree.leaves(res[key]["out"])))
             final = res[key]["out"] if final is None else final

@@ -532,12 +532,10 @@ class EvalConfig:
     # ends hands its lane to the next one queued, so lanes do not wait for the batch's longest episode)
     engine: str = "host"  # "device": the whole closed loop as one jitted program (evaluation/loop/; not etpnav,
     # traces or record_legs, which run on the host loop); "host": the host state machine of evaluation/host_loop.py
-    refill: float = 1.0  # device engine: share of the batch whose legs end before the loop reflects on them and
-    # starts their next legs while the others drive on (all that are going where fewer are; 1.0: every leg of the
-    # batch ends first). Rows do not depend on it; speed does (short legs stop waiting for the batch's longest)
-    reflect_lanes: int = 0  # device engine: lanes one reflection serves (0: every lane). With k, the loop drives
-    # until k lanes need a reflection (or refill's share, if fewer) and reflects on just those, gathered into a batch
-    # of k, so a reflection costs k lanes instead of the whole batch. Rows do not depend on it; speed does
+    refill: float = 0.125  # device engine: share of the lanes (eval.batch_size) one reflection serves. The loop
+    # drives until that many lanes need a reflection (legs ended, episodes to load) and reflects on just those,
+    # gathered into a batch of that size, while the others drive on (1.0: every lane, after every leg of the batch
+    # has ended). Rows do not depend on it; speed and compilation do (README: The device loop)
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)
@@ -567,7 +565,6 @@ class EvalConfig:
         _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
         _check(self.engine in ("host", "device"), "eval.engine", "must be 'host' or 'device'")
         _check(0.0 < self.refill <= 1.0, "eval.refill", "must be in (0, 1]")
-        _check(self.reflect_lanes >= 0, "eval.reflect_lanes", "must be >= 0 (0: every lane)")
         _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")

@@ -219,7 +219,7 @@ def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, ap
     monkeypatch.setattr(sections.experiment("bench_sim"), "bench_mjx",
                         lambda env, b, steps, reps: {"batch": b, "env_steps_per_s": 960.0, "compile_s": 0.1})
     p = QUICK.replace(name="loop-test", loop_scenes=1, loop_episodes=6, loop_distinct=3, loop_repeats=2,
-                      loop_host_repeats=1, loop_reflects=(2,))
+                      loop_host_repeats=1, loop_refills=(0.5,))
     eps = load_episodes(example_scene_path().parent / "episodes.jsonl", [apartment])
     art = {"scenes": [apartment], "explored": [types.SimpleNamespace(stream=None)], "bank": None,
            "embedder": HashingEmbedder(dim=64), "episodes": eps}
@@ -245,12 +245,12 @@ def test_closed_loop_section_times_the_loop_alone_and_replays_it(monkeypatch, ap
     assert res["methods"]["ragnav"]["device"]["compilations"] == 0  # the stub's cache, like jit's, is warm
     c = res["comparisons"][0]
     assert c["section"] == "closed_loop" and c["ratio"] > 0 and c["peer_episodes"] == 3 and c["episodes"] == 6
-    for m in res["methods"].values():  # the device runs again at eval.reflect_lanes=2, a compilation timed apart
-        r = m["device"]["reflects"]["2"]
+    for m in res["methods"].values():  # the device runs again at eval.refill=0.5, a compilation timed apart
+        r = m["device"]["refills"]["0.5"]
         assert r["episodes_per_s"] > 0 and r["compile_s"] >= 0 and len(r["warm"]) > 0
     md = sections.closed_loop_markdown(res)
     assert md[0].startswith("## Closed loop") and sum(line.startswith("| oracle") for line in md) == 2
-    assert any("eval.reflect_lanes" in line for line in md)
+    assert any("eval.refill" in line for line in md)
     assert len(comparison_table(res["comparisons"])) == 4
 
 

@@ -515,8 +515,7 @@ def _outcome_row(row: dict) -> tuple:
 
 
 def engine_runs(run: Callable[[], tuple], n: int, repeats: int, traces: dict,
-                refills: Sequence[float] = (), lanes: Sequence[int] = (),
-                reflects: Sequence[int] = ()) -> tuple[dict, list[dict]]:
+                refills: Sequence[float] = (), lanes: Sequence[int] = ()) -> tuple[dict, list[dict]]:
     """One engine's figures: run() (an evaluate_navigation call -> (rows, summary)) once with its loop captured,
     then the loop alone again on copies of the captured states (tiled to n episodes where n is more than run()
     evaluated), `repeats` times after the first timed run. The first timed run is the evaluate call's loop where
@@ -548,21 +547,19 @@ def engine_runs(run: Callable[[], tuple], n: int, repeats: int, traces: dict,
         same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(last)]
     warm = stats([r["wall_s"] for r in runs[1:] or runs])
     m = runs[0]["episodes"]
-    variants = {"refills": [("refill", r) for r in refills], "lanes": [("batch_size", b) for b in lanes],
-                "reflects": [("reflect_lanes", k) for k in reflects]}
+    variants = {"refills": [("refill", r) for r in refills], "lanes": [("batch_size", b) for b in lanes]}
     by = {}
     for group, settings in variants.items():  # the same states again with other eval settings
         by[group] = {}
-        compiles = group != "refills"  # a lane count or a reflection size is a new compilation: its first replay
-        for key, v in settings:  # is timed apart
-            times = []
-            for _ in range(max(repeats, 1) + compiles):
+        for key, v in settings:
+            times = []  # a refill share or a lane count is a new compilation: its first replay is timed apart
+            for _ in range(max(repeats, 1) + 1):
                 rec, fin = _replay(calls, max(n, d), traces, **{key: v})
                 times.append(rec["wall_s"])
                 same += [_outcome_state(st) == _outcome_state(finals[i % d]) for i, st in enumerate(fin)]
-            w = stats(times[compiles:])
+            w = stats(times[1:])
             by[group][str(v)] = {"warm": w, "episodes_per_s": m / w["median_s"],
-                                 **({"compile_s": max(times[0] - w["median_s"], 0.0)} if compiles else {})}
+                                 "compile_s": max(times[0] - w["median_s"], 0.0)}
     return {"episodes": m, "distinct_episodes": d, "tiled": tiled, "evaluate_call": ev, "runs": runs, "warm": warm,
             "episodes_per_s": m / warm["median_s"], "episodes_per_s_range": [m / warm["max_s"], m / warm["min_s"]],
             "compile_s": max(runs[0]["wall_s"] - warm["median_s"], 0.0), "jax_compile_s_first": runs[0]["compile_s"],
@@ -617,8 +614,8 @@ def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
         host, host_rows = engine_runs(runner(method, "host"), len(distinct), p.loop_host_repeats, executor.traces)
         _partial(res)
         dev, dev_rows = engine_runs(runner(method, "device"), n, p.loop_repeats, executor.traces, p.loop_refills,
-                                     p.loop_lanes, p.loop_reflects)
-        dev["refill"], dev["reflect_lanes"] = base.eval.refill, base.eval.reflect_lanes
+                                     p.loop_lanes)
+        dev["refill"] = base.eval.refill
         same = [_outcome_row(h) == _outcome_row(d) for h, d in zip(host_rows, dev_rows)]
         rec = {"host": host, "device": dev, "agreement": float(np.mean(same)), "agreement_episodes": len(same),
                "success_rate_host": float(np.mean([r["success"] for r in host_rows])),
@@ -653,7 +650,7 @@ def bench_closed_loop(p: Profile, log: Callable[[str], None]) -> dict:
            "for throughput at a large batch); the host engine runs the distinct ones. " if n > len(distinct) else "")
         + "episodes_per_s: episodes / median seconds of the runs after the first; compile_s = first run - that "
         "median (the first run: the evaluate call's loop or, tiled, the first replay, which compiles for its batch "
-        "once more); refills, lanes, reflects: the same replays at other eval.refill shares, eval.batch_size lane counts and eval.reflect_lanes sizes (a lane count or a reflection size compiles once, in a first replay timed apart: compile_s). compilations: traces of the executor's jitted init, run and look (the device program traces "
+        "once more); refills, lanes: the same replays at other eval.refill shares and eval.batch_size lane counts (each compiles once, in a first replay timed apart: compile_s). compilations: traces of the executor's jitted init, run and look (the device program traces "
         "run and look once each). agreement: "
         "share of distinct episodes with the same success and goal_status on both engines; replay_agreement: the "
         "same status and found on every replay as in the evaluate call. env_steps_per_s: experiments/bench_sim.py "
@@ -681,11 +678,9 @@ def closed_loop_markdown(sec: dict) -> list[str]:
                  f"{d['episodes_per_s'] / h['episodes_per_s']:.2f}x | {d['compile_s']:.1f} | {h['compilations']} / "
                  f"{d['compilations']} | {r.get('steps_per_episode', nan):.0f} | "
                  f"{r.get('episodes_per_s_bound') or nan:.2f} | {r['agreement']:.2f} |")
-    titles = {"refills": "eval.refill (the share of legs that end before the loop reflects)",
-              "lanes": "eval.batch_size lanes (episodes run at once; the others queue)",
-              "reflects": "eval.reflect_lanes (lanes one reflection serves; 0: every lane)"}
-    for group, what, conf in (("refills", "refill", "refill"), ("lanes", "lanes", "batch_size"),
-                              ("reflects", "reflect_lanes", "reflect_lanes")):
+    titles = {"refills": "eval.refill (the share of the lanes one reflection serves)",
+              "lanes": "eval.batch_size lanes (episodes run at once; the others queue)"}
+    for group, what, conf in (("refills", "refill", "refill"), ("lanes", "lanes", "batch_size")):
         rows = [(m, r["device"]) for m, r in sec["methods"].items() if r["device"].get(group)]
         if not rows:
             continue

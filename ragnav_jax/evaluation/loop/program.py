@@ -7,10 +7,9 @@ candidates, verdict and search tables, the memory's paths, occupancy grids and l
 and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
 makes the rows). In between, each iteration of the while_loop reflects on the episodes whose leg ended
 (look-around with MJX camera visibility -> `step.after_leg` -> budget -> a lane whose episode ended takes the
-next queued one -> `step.next_leg` -> waypoints, all vmapped and masked over `eval.reflect_lanes` lanes gathered
-from the batch) and then drives (`Executor.advance`, a while_loop over MJX control steps) until a share
-`eval.refill` of the lanes (at most `eval.reflect_lanes`) need a reflection, so short legs do not wait for the
-batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
+next queued one -> `step.next_leg` -> waypoints, all vmapped and masked over a share `eval.refill` of the lanes,
+gathered from the batch) and then drives (`Executor.advance`, a while_loop over MJX control steps) until that
+many lanes need a reflection again, so short legs do not wait for the batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
 data (`Inputs`), the settings static `Flags`, the order penalty lambda an array: a sweep over it, and every
 method, reuse one compilation.
 
@@ -21,6 +20,7 @@ What differs from the host loop is in the README ("The device loop"). The ETPNav
 from __future__ import annotations
 
 import functools
+import math
 
 import jax
 import jax.numpy as jnp
@@ -54,7 +54,7 @@ def flags_of(cfg: Config, look_cost: int) -> Flags:
                  found_radius=ev.found_radius, approach_gap=ev.approach_gap, robot_radius=sim.robot_radius,
                  need=sim.robot_radius + GRID_MARGIN_M, tight=sim.robot_radius + TIGHT_GAP_M,
                  solver=cfg.planning.solver, search_iters=cfg.planning.local_search_iters, path_points=ev.path_points,
-                 reflect_lanes=ev.reflect_lanes)
+                 refill=ev.refill)
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -182,25 +182,24 @@ def _put(tree, idx, sub):
     return jax.tree.map(lambda x, y: x.at[idx].set(y, unique_indices=True), tree, sub)
 
 
-def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, count=None, *, fl: Flags, init,
+def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=None, *, fl: Flags, init,
                 advance, look, lanes: int | None = None) -> State:
     """Runs every episode of a queue to its end on `lanes` lanes. inp, scene_idx (Q,) executor scene, start_pose
     (Q, 3) and lam (Q,) order penalty (a sweep's grid points are episodes too) have the queue's leading axis Q;
-    refill () eval.refill; count () episodes of the queue to run (the rest is padding; default Q); lanes
-    (static) episodes run at once (default Q). Returns the final State of every queued episode (Q leading).
+    count () episodes of the queue to run (the rest is padding; default Q); lanes (static) episodes run at once
+    (default Q). Returns the final State of every queued episode (Q leading).
 
-    Each iteration reflects on up to K = fl.reflect_lanes lanes (0: every lane) that need it, gathered into a
-    batch of K: the end of a lane's leg (look-around, `step.after_leg`, the budget), the next episode of the
-    queue where its episode ended (its first plan and MJX state), its next leg (`step.next_leg`, waypoints).
-    Then it drives (`advance`) until min(refill * lanes, K) lanes need a reflection, or every leg has ended:
-    lanes do not wait for the batch's longest leg (refill 1.0 with K = lanes: every leg ends first), nor for
-    its longest episode while the queue lasts. A reflection costs its K lanes however few of them need it,
-    so both are counts of lanes, not of the legs going. An episode's legs and steps do not depend on its lane,
-    on when it was loaded, on the share or on K."""
+    Each iteration reflects on K = ceil(fl.refill * lanes) lanes that need it, gathered into a batch of K: the
+    end of a lane's leg (look-around, `step.after_leg`, the budget), the next episode of the queue where its
+    episode ended (its first plan and MJX state), its next leg (`step.next_leg`, waypoints). Then it drives
+    (`advance`) until K lanes need a reflection, or every leg has ended: lanes do not wait for the batch's
+    longest leg (refill 1.0: every leg ends first), nor for its longest episode while the queue lasts. A
+    reflection costs its K lanes however few of them need it, so K counts lanes, not the legs going. An
+    episode's legs and steps do not depend on its lane, on when it was loaded or on K."""
     N, O = world.pos.shape[1], world.known.shape[1]
     Q = inp.b.shape[0]
     L = Q if lanes is None else min(lanes, Q)
-    K = L if fl.reflect_lanes <= 0 else min(fl.reflect_lanes, L)  # lanes one reflection serves
+    K = max(1, min(L, math.ceil(fl.refill * L)))  # lanes one reflection serves
     count = jnp.int32(Q) if count is None else jnp.asarray(count, jnp.int32)
     first = initial_state(inp, lam, world, fl, N, O)  # (Q) every queued episode's first plan
     start_d = init(scene_idx, start_pose)  # (Q) and its MJX state at the start pose
@@ -273,9 +272,8 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, refill, c
         sub = reflect(*_take((st, drv, arrived, going, pending, ep), idx), nxt, out, idx)
         (st, drv, pending, ep), nxt, out = _put((st, drv, pending, ep), idx, sub[:4]), sub[4], sub[5]
         unserved = needs.at[idx].set(False, unique_indices=True)
-        # drive until `share` lanes need a reflection: legs in progress end, joining those still unserved
-        share = jnp.minimum(jnp.ceil(refill * L).astype(jnp.int32), K)
-        keep = jnp.maximum(jnp.sum(pending & ~unserved) + jnp.sum(unserved) - share, 0)
+        # drive until K lanes need a reflection: legs in progress end, joining those still unserved
+        keep = jnp.maximum(jnp.sum(pending & ~unserved) + jnp.sum(unserved) - K, 0)
         drv, arrived, going = advance(scene_idx[ep], drv, keep)
         return st, drv, arrived, going, pending, ep, nxt, out, it + 1
 
@@ -342,7 +340,7 @@ def run_device(loop, states: list, cfg: Config, progress=None) -> None:
         start = _pad(jnp.asarray([[*loop.scenes[st.ep.scene].start.position[:2], loop.scenes[st.ep.scene].start.yaw]
                                   for st in chunk], jnp.float32), Q)
         lam = jnp.full(Q, cfg.planning.lam, jnp.float32)
-        write_back(chunk, prog(world, inp, sidx, start, lam, jnp.float32(cfg.eval.refill), jnp.int32(len(chunk))),
+        write_back(chunk, prog(world, inp, sidx, start, lam, jnp.int32(len(chunk))),
                    loop)
         if progress is not None:
             progress(len(chunk))

@@ -41,7 +41,7 @@ class Flags(NamedTuple):
     solver: str  # planning.solver
     search_iters: int  # planning.local_search_iters
     path_points: int  # P: waypoints per leg
-    reflect_lanes: int = 0  # eval.reflect_lanes: lanes one reflection serves (0: every lane)
+    refill: float = 1.0  # eval.refill: share of the lanes one reflection serves
 
 
 @struct.dataclass

@@ -110,12 +110,12 @@ def _judge_runs(st: State, num_true, strict, oracle_m, *, max_steps: int):
     return jnp.stack([x.astype(jnp.float32) for x in out], axis=-1)
 
 
-def _judged_runs(le: LoopEpisodes, run_e, cands, est, has, lam, count, *, loop_fn, refill: float, max_steps: int):
+def _judged_runs(le: LoopEpisodes, run_e, cands, est, has, lam, count, *, loop_fn, max_steps: int):
     """(Q, 4) `_judge_runs` of Q queued closed-loop runs: episode run_e (Q,) with candidates (Q, G, K), estimates
     (Q, G, K, 2), masks (Q, G, K) and order penalty lam (Q,); the first count[0] are run, the rest is padding.
     loop_fn: `program.closed_loop` with its static settings (`program.compiled`)."""
     inp = jax.tree.map(lambda x: x[run_e], le.base).replace(cands=cands, est=est, has_est=has)
-    st = loop_fn(le.world, inp, le.scene_idx[run_e], le.start[run_e], lam, jnp.float32(refill), count[0])
+    st = loop_fn(le.world, inp, le.scene_idx[run_e], le.start[run_e], lam, count[0])
     return _judge_runs(st, le.num_true[run_e], le.strict[run_e], le.oracle_m[run_e], max_steps=max_steps)
 
 
@@ -293,7 +293,7 @@ def closed_loop_metrics(cfg: Config, bank, scenes: Sequence, episodes: Sequence,
     le, totals, loop, ranking = loop_episodes(cfg, bank, scenes, episodes, embedder, modalities, executor, verifier)
     fl = program.flags_of(cfg, loop.look_cost)
     ex, lanes, mesh = loop.ex, cfg.eval.batch_size, sweep_mesh(cfg)
-    fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes), refill=cfg.eval.refill,
+    fn = functools.partial(_judged_runs, loop_fn=program.compiled(ex, fl, lanes),
                            max_steps=fl.max_steps)  # the device eval's compiled loop
     devices = list(mesh.devices.flat) if mesh is not None and jax.process_count() == 1 else None
     runs = LoopRuns(fn, le, lanes, devices)
