@@ -92,6 +92,7 @@ class Executor:
     # until at most `keep` legs are still going (0: every leg ends), for callers that trace it into a larger
     # program (evaluation/loop)
     look_fn: object  # look unjitted, likewise
+    leg_status: object  # unjitted (Driving) -> (arrived (E,), still driving (E,)), likewise
 
 
 def make_executor(scenes: Sequence[Scene], cfg: Config) -> Executor:
@@ -200,7 +201,8 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, run_traced, look, init, traces, {}, lambda i, c, keep: advance(i, c, keep)[:3], look_fn)
+                    run, run_traced, look, init, traces, {}, lambda i, c, keep: advance(i, c, keep)[:3], look_fn,
+                    status)
 
 
 def densify(points: np.ndarray, P: int, spacing: float = 0.25) -> np.ndarray:

@@ -183,7 +183,7 @@ def _put(tree, idx, sub):
 
 
 def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=None, *, fl: Flags, init,
-                advance, look, lanes: int | None = None) -> State:
+                advance, look, status, lanes: int | None = None) -> State:
     """Runs every episode of a queue to its end on `lanes` lanes. inp, scene_idx (Q,) executor scene, start_pose
     (Q, 3) and lam (Q,) order penalty (a sweep's grid points are episodes too) have the queue's leading axis Q;
     count () episodes of the queue to run (the rest is padding; default Q); lanes (static) episodes run at once
@@ -272,9 +272,22 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         sub = reflect(*_take((st, drv, arrived, going, pending, ep), idx), nxt, out, idx)
         (st, drv, pending, ep), nxt, out = _put((st, drv, pending, ep), idx, sub[:4]), sub[4], sub[5]
         unserved = needs.at[idx].set(False, unique_indices=True)
-        # drive until K lanes need a reflection: legs in progress end, joining those still unserved
+        # drive until K lanes need a reflection: legs in progress end, joining those still unserved. Once no more
+        # than K legs are going (the batch's last ones), on K lanes gathered from the batch: a control step then
+        # costs K lanes, not L
         keep = jnp.maximum(jnp.sum(pending & ~unserved) + jnp.sum(unserved) - K, 0)
-        drv, arrived, going = advance(scene_idx[ep], drv, keep)
+        sidx = scene_idx[ep]
+
+        def drive_all(drv):
+            return advance(sidx, drv, keep)[0]
+
+        def drive_few(drv):
+            idx = jnp.argsort(jnp.where(going_now, 0, 1))[:K]  # every lane going, then others (left as they are)
+            return _put(drv, idx, advance(sidx[idx], _take(drv, idx), keep)[0])
+
+        going_now = status(drv)[1]
+        drv = drive_all(drv) if K == L else jax.lax.cond(jnp.sum(going_now) <= K, drive_few, drive_all, drv)
+        arrived, going = status(drv)
         return st, drv, arrived, going, pending, ep, nxt, out, it + 1
 
     z = jnp.zeros(L, bool)
@@ -289,7 +302,7 @@ def compiled(ex, fl: Flags, lanes: int | None = None):
     key = ("device_program", fl, lanes)
     if key not in ex.cache:
         ex.cache[key] = jax.jit(functools.partial(closed_loop, fl=fl, init=ex.init, advance=ex.advance,
-                                                  look=ex.look_fn, lanes=lanes))
+                                                  look=ex.look_fn, status=ex.leg_status, lanes=lanes))
     return ex.cache[key]
 
 
