@@ -9,9 +9,9 @@ makes the rows). In between, each iteration of the while_loop reflects on the ep
 (look-around with MJX camera visibility -> `step.after_leg` -> budget -> a lane whose episode ended takes the
 next queued one -> `step.next_leg` -> waypoints, all vmapped and masked over a share `eval.refill` of the lanes,
 gathered from the batch) and then drives (`Executor.advance`, a while_loop over MJX control steps) until that
-many lanes need a reflection again, so short legs do not wait for the batch's longest. eval.batch_size lanes run at once; a call queues several batches. The method is
-data (`Inputs`), the settings static `Flags`, the order penalty lambda an array: a sweep over it, and every
-method, reuse one compilation.
+many lanes need a reflection again, so short legs do not wait for the batch's longest. eval.batch_size lanes run
+at once; a call queues several batches. The method is data (`Inputs`), the settings static `Flags`, the order
+penalty lambda an array: a sweep over it, and every method, reuse one compilation.
 
 What differs from the host loop is in the README ("The device loop"). The ETPNav-style baseline
 (exploration replay), traces and record_legs run on the host loop only.
@@ -194,7 +194,8 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
     episode ended (its first plan and MJX state), its next leg (`step.next_leg`, waypoints). Then it drives
     (`advance`) until K lanes need a reflection, or every leg has ended: lanes do not wait for the batch's
     longest leg (refill 1.0: every leg ends first), nor for its longest episode while the queue lasts. A
-    reflection costs its K lanes however few of them need it, so K counts lanes, not the legs going. An
+    reflection costs its K lanes however few of them need it, so K counts lanes, not the legs going. Once no
+    more than K legs are going (the batch's tail), the drive too runs on K lanes gathered from the batch. An
     episode's legs and steps do not depend on its lane, on when it was loaded or on K."""
     N, O = world.pos.shape[1], world.known.shape[1]
     Q = inp.b.shape[0]
@@ -276,16 +277,15 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         # than K legs are going (the batch's last ones), on K lanes gathered from the batch: a control step then
         # costs K lanes, not L
         keep = jnp.maximum(jnp.sum(pending & ~unserved) + jnp.sum(unserved) - K, 0)
-        sidx = scene_idx[ep]
+        sidx, going_now = scene_idx[ep], status(drv)[1]
 
         def drive_all(drv):
             return advance(sidx, drv, keep)[0]
 
         def drive_few(drv):
-            idx = jnp.argsort(jnp.where(going_now, 0, 1))[:K]  # every lane going, then others (left as they are)
-            return _put(drv, idx, advance(sidx[idx], _take(drv, idx), keep)[0])
+            few = jnp.argsort(jnp.where(going_now, 0, 1))[:K]  # every lane going, then others (left as they are)
+            return _put(drv, few, advance(sidx[few], _take(drv, few), keep)[0])
 
-        going_now = status(drv)[1]
         drv = drive_all(drv) if K == L else jax.lax.cond(jnp.sum(going_now) <= K, drive_few, drive_all, drv)
         arrived, going = status(drv)
         return st, drv, arrived, going, pending, ep, nxt, out, it + 1
