@@ -254,3 +254,32 @@ def test_candidate_unary_keeps_top_candidate_free():
 
     u = candidate_unary(jnp.array([[0.9, 0.5], [0.3, 0.2]]), jnp.float32(10.0), jnp.array([[True, True], [True, False]]))
     np.testing.assert_allclose(np.asarray(u), [[0.0, 4.0], [0.0, 0.0]], atol=1e-5)
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(seed=st.integers(0, 2**31 - 1), count=st.integers(1, 7))
+def test_orders_of_a_batch_is_each_problems_itertools_optimum(seed, count):
+    """The host's batched call (one solver call for problems of mixed goal counts and lambdas, episodes padded
+    to a power of two) returns, for each problem, an order whose objective is itertools' optimum."""
+    rng = np.random.default_rng(seed)
+    N = 10
+    problems = []
+    for _ in range(count):
+        pts = rng.uniform(0, 10, (N, 2))
+        cost = np.linalg.norm(pts[:, None] - pts[None], axis=-1).astype(np.float32)
+        n = int(rng.integers(0, 6))
+        nodes = rng.choice(np.arange(1, N), n, replace=False).tolist()
+        rank = rng.integers(0, max(n, 1), n).tolist()
+        problems.append((cost, int(rng.integers(0, N)), nodes, rank, float(rng.choice([0.0, 2.0, 1e4]))))
+    orders = order_mod.orders_of(problems)
+    for (cost, start, nodes, rank, lam), order in zip(problems, orders):
+        assert sorted(order) == list(range(len(nodes)))
+        if not nodes:
+            continue
+        seq = [nodes[k] for k in order]
+        inv = sum(1 for a in range(len(order)) for b in range(a + 1, len(order)) if rank[order[a]] > rank[order[b]])
+        got = cost[start, seq[0]] + sum(cost[seq[t], seq[t + 1]] for t in range(len(seq) - 1)) + lam * inv
+        idx = [start, *nodes]
+        want = reference(cost[start, nodes], cost[np.ix_(nodes, nodes)], rank, lam)
+        assert got == pytest.approx(want, rel=1e-5, abs=1e-4), idx
+        assert order == order_mod.order_of(cost, start, nodes, rank, lam)  # one problem alone: the same order

@@ -43,7 +43,7 @@ from ragnav_jax.evaluation.ranking import Candidates
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.memory.paths import reconstruct_path
 from ragnav_jax.memory.types import MemoryBank
-from ragnav_jax.planning.order import order_of
+from ragnav_jax.planning.order import orders_of
 from ragnav_jax.world.scene import Scene
 
 REVISIT = re.compile(r"\b(?:back|again|return|returning|revisit|once\s+more)\b")  # a goal that goes back to an object
@@ -58,10 +58,14 @@ def plan_order(cost: np.ndarray, start: int, nodes: Sequence[int], goals: Sequen
     """Visiting order of `goals` (their target nodes `nodes`) from node `start`: the paper's Pi*
     (`planning/order.py`), path cost + lam * (goal pairs visited against the instruction order) for strict
     episodes, path cost alone for free ones; goals unreachable from the start come last."""
-    goals = list(goals)
-    keep = order_of(cost, start, list(nodes), goals if strict else [0] * len(goals), lam if strict else 0.0,
-                    solver, max_iters)
-    return [goals[k] for k in keep]
+    return plan_orders([(cost, start, nodes, goals, strict, lam)], solver, max_iters)[0]
+
+
+def plan_orders(problems: Sequence[tuple], solver: str = "auto", max_iters: int = 100) -> list[list[int]]:
+    """`plan_order` of each (cost, start, nodes, goals, strict, lam), in one solver call (`orders_of`)."""
+    keeps = orders_of([(cost, start, list(nodes), list(goals) if strict else [0] * len(goals), lam if strict else 0.0)
+                       for cost, start, nodes, goals, strict, lam in problems], solver, max_iters)
+    return [[list(p[3])[k] for k in keep] for p, keep in zip(problems, keeps)]
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -283,16 +287,22 @@ class Loop:
 
     def replan(self, st: EpisodeState) -> None:
         """Re-solves the order of the remaining goals from the robot's node with their current candidates."""
+        self.replan_all([st])
+
+    def replan_all(self, states: Sequence[EpisodeState]) -> None:
+        """`replan` of every state, in one solver call."""
         if not self.spec.optimal_order:
-            st.remaining = sorted(st.remaining)  # the instruction's order
+            for st in states:
+                st.remaining = sorted(st.remaining)  # the instruction's order
             return
-        live = [g for g in sorted(st.remaining) if self.current(st, g) is not None]
-        nodes = [self.current(st, g) for g in live]
+        lives = [[g for g in sorted(st.remaining) if self.current(st, g) is not None] for st in states]
         p = self.cfg.planning
-        order = plan_order(self.order_cost(st.b), st.node, nodes, live, st.strict, p.lam, p.solver, p.local_search_iters)
-        for d in sorted(set(st.remaining) - set(live)):  # goals with no candidate left keep their instruction place
-            order.insert(max((k + 1 for k, g in enumerate(order) if g < d), default=0) if st.strict else len(order), d)
-        st.remaining = order
+        orders = plan_orders([(self.order_cost(st.b), st.node, [self.current(st, g) for g in live], live, st.strict,
+                               p.lam) for st, live in zip(states, lives)], p.solver, p.local_search_iters)
+        for st, live, order in zip(states, lives, orders):
+            for d in sorted(set(st.remaining) - set(live)):  # goals with no candidate left keep their instruction place
+                order.insert(max((k + 1 for k, g in enumerate(order) if g < d), default=0) if st.strict else len(order), d)
+            st.remaining = order
 
     def estimate(self, st: EpisodeState, g: int):
         """(2,) estimated position of the current candidate's retrieved instance, or None."""

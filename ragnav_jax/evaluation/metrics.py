@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter, defaultdict
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -50,24 +51,32 @@ def _route(loop, b: int, start: int, nodes: list[int]) -> tuple[float, float]:
     return r1, r2
 
 
-def _oracle_length(loop, st, oracle_nodes: list) -> float:
-    from ragnav_jax.evaluation.host_loop import plan_order
+def oracle_lengths(loop, states: Sequence, oracle_nodes: Sequence[list]) -> list[float]:
+    """The SPL reference of each state's episode: the memory-path length of Pi* over its true goals' nodes
+    (`oracle_nodes[i]`: state i's per-goal candidate lists, the first the true one) from the start, goals the
+    start cannot reach left out; one solver call for all (`plan_orders`)."""
+    from ragnav_jax.evaluation.host_loop import plan_orders
 
-    b = st.b
-    start = loop.nearest(b, loop.scenes[st.ep.scene].start.position[:2])
-    goals = [g for g, c in enumerate(oracle_nodes) if c and np.isfinite(loop.cost[b][start, c[0]])]
-    nodes = [oracle_nodes[g][0] for g in goals]
-    strict = st.ep.order == "strict"
-    order = plan_order(loop.cost[b], start, nodes, goals, strict, loop.cfg.eval.strict_lam, loop.cfg.planning.solver,
-                       loop.cfg.planning.local_search_iters)
-    c, cur = 0.0, start
-    for g in order:
-        c += float(loop.cost[b][cur, oracle_nodes[g][0]])
-        cur = oracle_nodes[g][0]
-    return c
+    problems, walks = [], []
+    for st, nodes in zip(states, oracle_nodes):
+        b = st.b
+        start = loop.nearest(b, loop.scenes[st.ep.scene].start.position[:2])
+        goals = [g for g, c in enumerate(nodes) if c and np.isfinite(loop.cost[b][start, c[0]])]
+        problems.append((loop.cost[b], start, [nodes[g][0] for g in goals], goals, st.ep.order == "strict",
+                         loop.cfg.eval.strict_lam))
+        walks.append((b, start, nodes))
+    lengths = []
+    for (b, cur, nodes), order in zip(walks, plan_orders(problems, loop.cfg.planning.solver,
+                                                         loop.cfg.planning.local_search_iters)):
+        c = 0.0
+        for g in order:
+            c += float(loop.cost[b][cur, nodes[g][0]])
+            cur = nodes[g][0]
+        lengths.append(c)
+    return lengths
 
 
-def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
+def episode_row(st, loop, oracle_length: float, cands, cfg, method: str) -> dict:
     """One episode's outcome against its true goals. The loop ran the subgoals it read; a declaration counts
     for the true goal it was made at (`truth`), and one made at no true goal is a wrong declaration, which
     fails the episode. `goal_status` is per true goal (found, else what became of the subgoal read in its
@@ -92,7 +101,7 @@ def episode_row(st, loop, oracle_nodes: list, cands, cfg, method: str) -> dict:
     budget_ok = st.steps + st.look_steps <= cfg.eval.max_steps
     success = all(found) and (in_order or not strict) and budget_ok and not wrong
     L = st.length
-    Ls = _oracle_length(loop, st, oracle_nodes)
+    Ls = oracle_length
     ratio = 1.0 if Ls <= 0 and L <= 0 else Ls / max(L, Ls, 1e-9)
     sc = loop.scenes[ep.scene]
     obs = np.asarray(loop.bank.memory.obs_object[st.b])

@@ -77,11 +77,12 @@ def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequen
         ests = ((cands.est[e] if cands.est else []) + [[]] * G)[:G]
         st = EpisodeState(e, ep, b, ex.names.index(ep.scene), sgs, (cands.nodes[e] + [[]] * G)[:G], ests, [0] * G,
                           [0] * G, list(range(G)), start, ["pending"] * G, strict, [False] * len(ep.goals))
-        if not spec.explores:
-            loop.replan(st)
-        st.planned = list(st.remaining)
-        st.trace = trace_of(loop, st, cands) if ep.id in trace else None
         states.append(st)
+    if not spec.explores:
+        loop.replan_all(states)
+    for st in states:
+        st.planned = list(st.remaining)
+        st.trace = trace_of(loop, st, cands) if st.ep.id in trace else None
     task_time = (time.perf_counter() - t0) / max(len(episodes), 1)
     return loop, states, cands, oracle, task_time
 
@@ -96,7 +97,7 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     `eval.engine` picks the loop: "host" (`host_loop._run_chunk`, one batched MJX call per leg) or "device"
     (`evaluation/loop/program.py`, the whole loop one jitted program; etpnav, traces and record_legs run on
     the host)."""
-    from ragnav_jax.evaluation.metrics import episode_row, summarise
+    from ragnav_jax.evaluation.metrics import episode_row, oracle_lengths, summarise
 
     method = method or cfg.eval.method
     spec = method_spec(method)
@@ -117,7 +118,8 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
             bar(len(chunk))
     bar(0, close=True)
     cands.timing["loop_s"] = time.perf_counter() - t0
-    rows = [episode_row(st, loop, oracle.nodes[st.e], cands, cfg, method) for st in states]
+    lengths = oracle_lengths(loop, states, [oracle.nodes[st.e] for st in states])
+    rows = [episode_row(st, loop, Ls, cands, cfg, method) for st, Ls in zip(states, lengths)]
     for r, st in zip(rows, states):
         if st.trace is not None:
             r["trace"] = st.trace

@@ -418,30 +418,49 @@ def solve(
     return _solve(problems, lams, method=method, batch_size=min(batch_size, max(E, 1)), max_iters=max_iters)
 
 
+_problems = jax.jit(jax.vmap(lambda d, s, t, r: order_problem(d, s, t, rank=r)))  # (E, ...) host problems, one call
+
 PAD_GOALS = 8  # goals of one host-side problem are padded to this, so one compilation serves every episode
 
 
 def order_of(cost: np.ndarray, start: int, nodes: list[int], rank: list[int], lam: float, method: str = "auto",
              max_iters: int = 100) -> list[int]:
-    """Pi* for one episode from the host: indices into `nodes` in visiting order, goals unreachable from the
-    start after the planned ones (in their given order).
+    """Pi* for one episode from the host (`orders_of` of one problem): indices into `nodes` in visiting order,
+    goals unreachable from the start after the planned ones (in their given order).
 
     cost: (N, N) shortest-path costs (inf where no path); start: the robot's node; nodes: each goal's target
-    node; rank: each goal's place in the instruction (equal ranks are unordered); lam: the order penalty.
-    The problem is cut to the (G + 1) nodes it needs and padded to PAD_GOALS goals (jit-stable shapes)."""
-    G = len(nodes)
-    if G <= 1:
-        return list(range(G))
-    P = max(PAD_GOALS, G)
-    idx = [start, *nodes]
-    sub = np.full((P + 1, P + 1), np.inf, np.float32)
-    sub[: G + 1, : G + 1] = np.asarray(cost, np.float32)[np.ix_(idx, idx)]
-    targets = np.full(P, -1, np.int32)
-    targets[:G] = np.arange(1, G + 1)
-    ranks = np.zeros(P, np.int32)
-    ranks[:G] = rank
-    problem = order_problem(sub, np.int32(0), targets, rank=ranks)
-    result = solve(jax.tree.map(lambda x: x[None], problem), np.array([lam], np.float32), method=method,
-                   max_iters=max_iters)
-    planned = [int(k) for k in np.asarray(result.order[0, 0]) if 0 <= k < G]
-    return planned + [k for k in range(G) if k not in planned]
+    node; rank: each goal's place in the instruction (equal ranks are unordered); lam: the order penalty."""
+    return orders_of([(cost, start, nodes, rank, lam)], method, max_iters)[0]
+
+
+def orders_of(problems: list[tuple], method: str = "auto", max_iters: int = 100) -> list[list[int]]:
+    """Pi* for many episodes from the host in one solver call: `order_of` of each (cost, start, nodes, rank, lam).
+
+    Each problem is cut to the (G + 1) nodes it needs and padded to PAD_GOALS goals, the episodes to a power of
+    two (jit-stable shapes: a handful of compilations for a whole evaluation); every distinct lam is solved for
+    every episode and each episode reads its own."""
+    out = [list(range(len(p[2]))) for p in problems]
+    todo = [i for i, p in enumerate(problems) if len(p[2]) > 1]
+    if not todo:
+        return out
+    P = max(PAD_GOALS, max(len(problems[i][2]) for i in todo))
+    E = 1 << (len(todo) - 1).bit_length()
+    sub = np.full((E, P + 1, P + 1), np.inf, np.float32)
+    targets = np.full((E, P), -1, np.int32)
+    ranks = np.zeros((E, P), np.int32)
+    lam = np.zeros(E, np.float32)
+    for k, i in enumerate(todo):
+        cost, start, nodes, rank, lam[k] = problems[i]
+        G, idx = len(nodes), [start, *nodes]
+        sub[k, : G + 1, : G + 1] = np.asarray(cost, np.float32)[np.ix_(idx, idx)]
+        targets[k, :G] = np.arange(1, G + 1)
+        ranks[k, :G] = rank
+    sub[len(todo) :], targets[len(todo) :] = sub[0], targets[0]  # padding: copies of the first, never read
+    lams, which = np.unique(lam, return_inverse=True)
+    problem = _problems(sub, np.zeros(E, np.int32), targets, ranks)
+    order = np.asarray(solve(problem, lams, method=method, max_iters=max_iters).order)[which.reshape(-1), np.arange(E)]
+    for k, i in enumerate(todo):
+        G = len(problems[i][2])
+        planned = [int(x) for x in order[k] if 0 <= x < G]
+        out[i] = planned + [x for x in range(G) if x not in planned]
+    return out

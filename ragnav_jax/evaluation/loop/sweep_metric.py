@@ -223,7 +223,7 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
     """(LoopEpisodes, totals (Mods,) episodes per modality, host Loop, the ranking's static settings) for RAGNav
     on these episodes."""
     from ragnav_jax.evaluation.methods import method_spec
-    from ragnav_jax.evaluation.metrics import _oracle_length
+    from ragnav_jax.evaluation.metrics import oracle_lengths
     from ragnav_jax.evaluation.navigate import prepare_episodes
     from ragnav_jax.evaluation.ranking import CANDIDATE_DEPTH, grounder, ruled_out
     from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
@@ -266,7 +266,7 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
     for e, st in enumerate(states):
         group[e, mods.index(st.ep.modality)] = True
         totals[mods.index(st.ep.modality)] += 1
-    oracle_m = np.asarray([_oracle_length(loop, st, oracle.nodes[st.e]) for st in states], np.float32)
+    oracle_m = np.asarray(oracle_lengths(loop, states, [oracle.nodes[st.e] for st in states]), np.float32)
     le = LoopEpisodes(
         batch=batch, world=program.world_of(loop), base=base, slot=jnp.asarray(slot),
         slot_b=jnp.asarray(np.asarray(sb or [0], np.int32)), slot_q=jnp.asarray(np.asarray(sq or [0], np.int32)),

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The whole paper benchmark, timed: a fresh paper-preset run (generate, explore, build-memory) and the closed loop
+# of all 11 methods over all 840 episodes of experiments/results/paper-episodes.jsonl.
+#   experiments/paper_benchmark.sh RUN [KEY=VALUE ...]      e.g. eval.batch_size=1024 memory.embedder=hashing
+# Writes RUN/times.json (seconds of each phase and in all) next to the eval's tables (RUN/eval). The overrides go
+# to every command; eval.engine=device is set here (the ETPNav-style baseline runs on the host loop on its own).
+set -euo pipefail
+R=$1; shift
+rag() { python3 -m ragnav_jax.cli "$@"; }
+M=ragnav,ragnav:no_forest,ragnav:no_topology,ragnav:no_spatial,ragnav:no_boost,naive_rag,graphrag,lightrag,remembr,etpnav,oracle
+now() { date +%s.%N; }
+t0=$(now)
+rag generate --config configs/paper.yaml --out "$R" --force --quiet --no-plots "$@"
+t1=$(now)
+rag explore --config configs/paper.yaml --out "$R" --force --quiet --no-plots "$@"
+t2=$(now)
+rag build-memory --config configs/paper.yaml --run "$R" --force --quiet "$@"
+t3=$(now)
+rag eval --config configs/paper.yaml --scenes "$R" --episodes experiments/results/paper-episodes.jsonl --method $M \
+  --out "$R/eval" --force --quiet eval.engine=device "$@"
+t4=$(now)
+python3 - "$R/times.json" "$t0" "$t1" "$t2" "$t3" "$t4" <<'EOF'
+import json, sys
+t = [float(x) for x in sys.argv[2:]]
+names = ["generate", "explore", "build_memory", "eval"]
+d = {n: round(b - a, 1) for n, a, b in zip(names, t, t[1:])} | {"total": round(t[-1] - t[0], 1)}
+json.dump(d, open(sys.argv[1], "w"), indent=1)
+print(json.dumps(d))
+EOF
