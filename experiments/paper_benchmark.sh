@@ -2,8 +2,9 @@
 # The whole paper benchmark, timed: a fresh paper-preset run (generate, explore, build-memory) and the closed loop
 # of all 11 methods over all 840 episodes of experiments/results/paper-episodes.jsonl.
 #   experiments/paper_benchmark.sh RUN [KEY=VALUE ...]      e.g. eval.batch_size=1024 memory.embedder=hashing
-# Writes RUN/times.json (seconds of each phase and in all) next to the eval's tables (RUN/eval). The overrides go
-# to every command; eval.engine=device is set here (the ETPNav-style baseline runs on the host loop on its own).
+# Writes RUN/times.json (seconds of each phase and in all); the eval's run folder is RUN/eval (its tables in
+# RUN/eval/eval/). The overrides go to every command; eval.engine=device is set here (the ETPNav-style baseline
+# runs on the host loop on its own).
 set -euo pipefail
 R=$1; shift
 rag() { python3 -m ragnav_jax.cli "$@"; }
