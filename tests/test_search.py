@@ -80,3 +80,25 @@ def test_search_finds_what_the_memory_never_recorded(hidden, apartment):
     kinds = [leg["kind"] for leg in legs]
     assert "search" in kinds and kinds[-1] == "approach" and kinds.index("search") > kinds.index("nav")
     assert all(room_of(apartment.rooms, *leg["end"]) == "living" for leg in legs if leg["kind"] == "search")
+
+
+def test_a_shared_verifier_reuses_its_views_and_checks(hidden, apartment):
+    """Methods evaluated together share one verifier (`ragnav eval`): the second method's memory views and
+    verdicts are the first's objects, equal to those of a verifier of its own; another bank gets its own."""
+    from ragnav_jax.evaluation.verify import verdict_table
+
+    cfg, bank, emb = hidden
+    texts = ["go to the potted plant in the living room", "find the sofa, then the bed"]
+    eps = [Episode(f"e{i}", apartment.name, t, ("x",)) for i, t in enumerate(texts)]
+    subgoals = [parse_instruction(t).subgoals for t in texts]
+    shared = Verifier.build(emb, cfg)
+    views = memory_views(shared, bank, [apartment])
+    first = verdict_table(shared, views, eps, subgoals)
+    assert memory_views(shared, bank, [apartment]) is views
+    again = verdict_table(shared, memory_views(shared, bank, [apartment]), eps, subgoals)
+    assert all(a is b for ra, rb in zip(first, again) for a, b in zip(ra, rb))
+    own = Verifier.build(emb, cfg)
+    fresh = verdict_table(own, memory_views(own, bank, [apartment]), eps, subgoals)
+    assert all(np.array_equal(a, b) for ra, rb in zip(first, fresh) for a, b in zip(ra, rb))
+    other = dataclasses.replace(bank)
+    assert memory_views(shared, other, [apartment]) is not views

@@ -76,6 +76,7 @@ def cmd_eval(args, cfg) -> int:
     from ragnav_jax.evaluation.execute import make_executor
     from ragnav_jax.evaluation.methods import NAV_METHODS
     from ragnav_jax.evaluation.navigate import evaluate_navigation
+    from ragnav_jax.evaluation.verify import Verifier
     from ragnav_jax.language.episodes import load_episodes
     from ragnav_jax.memory.encoder import bank_embedder
     from ragnav_jax.retrieval.commands import check_unparsed
@@ -103,10 +104,11 @@ def cmd_eval(args, cfg) -> int:
     embedder = bank_embedder(bank, cfg)
     used = [s for s in scenes if s.name in {e.scene for e in episodes}]
     executor = make_executor(used, cfg)
+    verifier = Verifier.build(embedder, cfg)  # shared: its encoder cache, memory views and checks serve every method
     summaries, first = {}, None
     for m in methods:
         rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, m, streams=streams,
-                                            progress=not args.quiet, executor=executor)
+                                            progress=not args.quiet, executor=executor, verifier=verifier)
         summary.update({"scenes": str(Path(args.scenes).resolve()), "episodes_file": str(Path(args.episodes).resolve()),
                         "memory": args.memory and str(Path(args.memory).resolve()),  # what show-episode replays
                         "unparsed": unparsed})

@@ -169,6 +169,9 @@ class Verifier:
         self.embedder, self.p, self.looks = embedder, params, looks
         self.near, self.radius, self.noise, self.seed = near_distance, location_radius, noise, seed
         self._vec: dict[str, np.ndarray] = {}
+        # methods evaluated on the same memory share its views and their checks (`memory_views`, `verdict_table`)
+        self._views: dict[tuple, tuple] = {}
+        self._checks: dict[tuple, tuple] = {}
 
     @classmethod
     def build(cls, embedder, cfg, params: VerifierParams | None = None) -> Verifier:
@@ -467,7 +470,12 @@ def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
 
 
 def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str, SceneView]:
-    """Scene name -> what its memory holds (`Verifier.scene_view`), for the bank's scenes among `scenes`."""
+    """Scene name -> what its memory holds (`Verifier.scene_view`), for the bank's scenes among `scenes`; kept on
+    the verifier for the same bank and scene objects."""
+    key = (id(bank), *map(id, scenes))
+    hit = verifier._views.get(key)
+    if hit is not None and hit[0] is bank and all(a is b for a, b in zip(hit[1], scenes)):
+        return hit[2]
     by_name = {s.name: s for s in scenes}
     obs = np.asarray(bank.memory.obs_object)
     mask = np.asarray(bank.memory.node_mask)
@@ -477,6 +485,7 @@ def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str,
             scene = by_name[meta.scene]
             known = sorted({int(x) for x in obs[b][mask[b]].ravel() if x >= 0})
             views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, scene)[0])
+    verifier._views[key] = (bank, tuple(scenes), views)
     return views
 
 
@@ -484,14 +493,18 @@ def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, sub
                   graded: bool = False) -> list[list[np.ndarray]]:
     """[e][g] -> (O,) bool verdicts over the scene's objects for every parsed subgoal (empty list for an
     episode that did not parse); graded: (O,) float parts failed instead (`Verifier.misfits`). Perception
-    noise is seeded by (cfg.seed, episode id)."""
+    noise is seeded by (cfg.seed, episode id). Each check is kept on the verifier: methods that read the same
+    subgoals of an episode (RAGNav's ablations, the retrieval baselines) share it."""
     check = verifier.misfits if graded else verifier.verdicts
     out = []
     for ep, sgs in zip(episodes, subgoals):
-        if not sgs:
-            out.append([])
-            continue
-        view = views[ep.scene]
-        ps = verifier.perceptions_of(view.scene, ep.id)
-        out.append([check(view, sg, ps) for sg in sgs])
+        view, ps, row = views[ep.scene] if sgs else None, None, []
+        for sg in sgs or ():
+            key = (id(view), ep.id, sg, graded)
+            hit = verifier._checks.get(key)
+            if hit is None or hit[0] is not view:
+                ps = verifier.perceptions_of(view.scene, ep.id) if ps is None else ps
+                hit = verifier._checks[key] = (view, check(view, sg, ps))
+            row.append(hit[1])
+        out.append(row)
     return out
