@@ -65,7 +65,7 @@ def plan_orders(problems: Sequence[tuple], solver: str = "auto", max_iters: int 
     """`plan_order` of each (cost, start, nodes, goals, strict, lam), in one solver call (`orders_of`)."""
     keeps = orders_of([(cost, start, list(nodes), list(goals) if strict else [0] * len(goals), lam if strict else 0.0)
                        for cost, start, nodes, goals, strict, lam in problems], solver, max_iters)
-    return [[list(p[3])[k] for k in keep] for p, keep in zip(problems, keeps)]
+    return [[goals[k] for k in keep] for (_, _, _, goals, _, _), keep in zip(problems, keeps)]
 
 
 # ----------------------------------------------------------------------------------------------------
