@@ -319,7 +319,8 @@ def test_drive_route_matches_loop_drive_points_on_random_maps(seed):
         local[pos[i].tobytes() + pos[j].tobytes()] = np.concatenate([pos[i][None], mid, pos[j][None]])
     loop = SimpleNamespace(pos=pos[None], mask=mask[None], obstacles={0: None}, drive_pred=np.asarray(pred)[None],
                            bank=SimpleNamespace(memory=SimpleNamespace(adjacency=adj[None])),
-                           ex=SimpleNamespace(path_points=P), _local=lambda b, a, c: local[a.tobytes() + c.tobytes()])
+                           ex=SimpleNamespace(path_points=P),
+                           local_plans=lambda b, A, C: [local[a.tobytes() + c.tobytes()] for a, c in zip(A, C)])
     _check_routes(loop, SimpleNamespace(b=0), [(i, j) for i in range(N) for j in range(N)], 5, N * N)
 
 
@@ -362,3 +363,27 @@ def test_join_plans_matches_numpy_concatenation(seed):
     assert int(m) == (len(want) if n > 0 else 0)
     np.testing.assert_array_equal(np.asarray(out[: len(want)]), np.stack(want))
     assert not np.asarray(out[len(want):]).any()
+
+
+@settings(max_examples=30, deadline=None)
+@given(SEEDS)
+def test_point_clearance_is_the_zero_length_segments_bit_for_bit(seed):
+    """segment_clearance(p, None) (the occupancy grid's cells) equals segment_clearance(p, p) exactly, points on
+    wall ends and at box centres included, and a point inside a blocking box has no clearance."""
+    from ragnav_jax.memory.topomap import segment_clearance
+
+    rng = np.random.default_rng(seed)
+    W, B, P = int(rng.integers(0, 10)), int(rng.integers(0, 10)), int(rng.integers(20, 200))
+    f = lambda *s: rng.uniform(-5, 5, s).astype(np.float32)  # noqa: E731
+    obs = {"wall_a": f(W, 2), "wall_b": f(W, 2), "wall_half": rng.uniform(0, 0.1, W).astype(np.float32),
+           "wall_mask": rng.random(W) < 0.8, "box_center": f(B, 2),
+           "box_half": rng.uniform(0.05, 1, (B, 2)).astype(np.float32), "box_mask": rng.random(B) < 0.8}
+    p = f(P, 2)
+    p[:W] = obs["wall_a"]  # points on wall ends, then at box centres
+    p[W : W + B] = obs["box_center"]
+    got, want = segment_clearance(p, None, obs), segment_clearance(p, p, obs)
+    assert got.dtype == want.dtype and np.array_equal(got, want)
+    inside = np.zeros(P, bool)
+    for c, h, m in zip(obs["box_center"], obs["box_half"], obs["box_mask"]):
+        inside |= m & np.all(np.abs(p - c) <= h, axis=1)
+    assert np.all(got[inside] <= 0.0)

@@ -23,9 +23,10 @@ ESCAPE_M = 0.3  # metres around a leg's ends where the local planner may pass ce
 CLOSER_GAP_M = 0.6  # extra metres (beyond approach_gap + robot radius) the look-closer leg stops short of it
 
 
-def segment_clearance_np(p: np.ndarray, q: np.ndarray, obs: dict) -> np.ndarray:
-    """(P,) clearance of segments p-q (P, 2) to a scene's walls and blocking objects (host NumPy)."""
-    return _segment_clearance(np.asarray(p, np.float32), np.asarray(q, np.float32), obs, np)
+def segment_clearance_np(p: np.ndarray, q: np.ndarray | None, obs: dict) -> np.ndarray:
+    """(P,) clearance of segments p-q (P, 2) to a scene's walls and blocking objects (host NumPy); q None: of the
+    points p."""
+    return _segment_clearance(np.asarray(p, np.float32), None if q is None else np.asarray(q, np.float32), obs, np)
 
 
 def approach_ring(c: np.ndarray, half: np.ndarray, gap: float, per_side: int = 5) -> np.ndarray:

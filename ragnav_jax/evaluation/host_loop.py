@@ -187,8 +187,7 @@ class Loop:
         if st.b not in self.obstacles or len(pts) < 2:
             return densify(pts, self.ex.path_points)
         out = [pts[:1]]
-        for a, c in zip(pts[:-1], pts[1:]):
-            out.append(self._local(st.b, a, c)[1:])
+        out += [way[1:] for way in self.local_plans(st.b, pts[:-1], pts[1:])]
         way = np.concatenate(out)
         return densify(way if len(way) <= self.ex.path_points else pts, self.ex.path_points)
 
@@ -203,26 +202,37 @@ class Loop:
             lo, hi = pts.min(0) - 0.5, pts.max(0) + 0.5
             xs, ys = np.arange(lo[0], hi[0], GRID_M), np.arange(lo[1], hi[1], GRID_M)
             cells = np.stack(np.meshgrid(xs, ys, indexing="ij"), -1).reshape(-1, 2).astype(np.float32)
-            clear = np.concatenate([segment_clearance_np(c, c, obs) for c in np.array_split(cells, max(len(cells) // 4096, 1))])
+            clear = np.concatenate([segment_clearance_np(c, None, obs) for c in np.array_split(cells, max(len(cells) // 4096, 1))])
             self._grids[b] = (lo.astype(np.float32), clear.reshape(len(xs), len(ys)))
         return self._grids[b]
 
-    def _local(self, b: int, a: np.ndarray, c: np.ndarray, anywhere: bool = False) -> np.ndarray:
+    def local_plans(self, b: int, A: np.ndarray, C: np.ndarray) -> list[np.ndarray]:
+        """`_local` of each segment A[k] -> C[k] (A, C (P, 2)), their straight-line tests in one clearance call."""
+        if not len(A):
+            return []
+        fits = segment_clearance_np(A, C, self.obstacles[b]) >= self._need()
+        short = np.linalg.norm(np.asarray(C) - np.asarray(A), axis=1) < 1e-3
+        return [self._local(b, a, c, straight=bool(s)) for a, c, s in zip(A, C, fits | short)]
+
+    def _local(self, b: int, a: np.ndarray, c: np.ndarray, anywhere: bool = False,
+               straight: bool | None = None) -> np.ndarray:
         """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS within a
         window around the segment over cells that clear the robot with a margin, then through passages it
         just fits; with `anywhere` (approaches, which go where no map edge leads), then the same over the
         whole house; shortcut by line of sight); the straight segment when none is found (a map edge the
         window finds no way along is driven as the map has it). Within ESCAPE_M of either end a cell as
         clear as that end passes too, so a robot parked in a tight spot (between a bin and a wall) can
-        leave it."""
+        leave it. `straight`: whether the segment clears the robot (or is under a millimetre), when known."""
         key = (b, *np.round(a, 3), *np.round(c, 3), anywhere)
         if key in self._local_cache:
             return self._local_cache[key]
         obs, need = self.obstacles[b], self._need()
+        if straight is None:
+            straight = bool(segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3)
+        if straight:
+            self._local_cache[key] = np.stack([a, c])
+            return self._local_cache[key]
         straight = np.stack([a, c])
-        if segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3:
-            self._local_cache[key] = straight
-            return straight
         lo, clear = self._grid(b)
         H, W = clear.shape
         cell = lambda p: (int(np.clip(round((p[0] - lo[0]) / GRID_M), 0, H - 1)),  # noqa: E731

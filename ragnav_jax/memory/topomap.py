@@ -27,9 +27,14 @@ def _point_segment(px, py, ax, ay, bx, by, xp):
 
 
 def segment_segment_distance(p, q, a, b, xp=np):
-    """Distance between segments p-q and a-b; all arguments (..., 2) of equal rank, broadcast."""
-    px, py, qx, qy = p[..., 0], p[..., 1], q[..., 0], q[..., 1]
+    """Distance between segments p-q and a-b; all arguments (..., 2) of equal rank, broadcast. q None: the points
+    p, the value of q = p bit for bit (no crossing, and a point's distance from a or b is a plain hypot)."""
     ax, ay, bx, by = a[..., 0], a[..., 1], b[..., 0], b[..., 1]
+    if q is None:
+        px, py = p[..., 0], p[..., 1]
+        return xp.minimum(_point_segment(px, py, ax, ay, bx, by, xp),
+                          xp.minimum(xp.hypot(ax - px, ay - py), xp.hypot(bx - px, by - py)))
+    px, py, qx, qy = p[..., 0], p[..., 1], q[..., 0], q[..., 1]
     d1 = _cross(qx - px, qy - py, ax - px, ay - py)
     d2 = _cross(qx - px, qy - py, bx - px, by - py)
     d3 = _cross(bx - ax, by - ay, px - ax, py - ay)
@@ -43,7 +48,8 @@ def segment_segment_distance(p, q, a, b, xp=np):
 
 
 def segment_box_distance(p, q, center, half, xp=np):
-    """Distance between segment p-q and axis-aligned boxes (centre, half extents); (..., 2) broadcast, 0 if touching."""
+    """Distance between segment p-q and axis-aligned boxes (centre, half extents); (..., 2) broadcast, 0 if touching;
+    q None: points."""
     lo, hi = center - half, center + half
     corners = [
         xp.stack([lo[..., 0], lo[..., 1]], -1), xp.stack([hi[..., 0], lo[..., 1]], -1),
@@ -79,11 +85,13 @@ def obstacles_from_arrays(a, xp=np) -> dict:
 
 
 def segment_clearance(p, q, obs: dict, xp=np):
-    """Free clearance (metres) of segments p-q (P, 2) to walls and blocking objects: (P,), +inf when none."""
+    """Free clearance (metres) of segments p-q (P, 2) to walls and blocking objects: (P,), +inf when none; q None:
+    of the points p (equal to q = p, in about half the work)."""
     wa, wb = obs["wall_a"][None], obs["wall_b"][None]
-    dw = segment_segment_distance(p[:, None, :], q[:, None, :], wa, wb, xp) - obs["wall_half"][None]
+    q = None if q is None else q[:, None, :]
+    dw = segment_segment_distance(p[:, None, :], q, wa, wb, xp) - obs["wall_half"][None]
     dw = xp.where(obs["wall_mask"][None], dw, xp.inf)
-    db = segment_box_distance(p[:, None, :], q[:, None, :], obs["box_center"][None], obs["box_half"][None], xp)
+    db = segment_box_distance(p[:, None, :], q, obs["box_center"][None], obs["box_half"][None], xp)
     db = xp.where(obs["box_mask"][None], db, xp.inf)
     inf = xp.full(p.shape[:1], xp.inf)
     mw = xp.min(dw, axis=1) if dw.shape[1] else inf

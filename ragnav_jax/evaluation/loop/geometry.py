@@ -287,7 +287,7 @@ def approach_stop(c, half, pose, gap, need, obs, origin, clear, labels, tight, r
 
 
 def edge_plans(loop, b: int, K: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Host: the local plan (`Loop._local`) of every directed map edge of bank scene b, for `drive_route`.
+    """Host: the local plan (`Loop.local_plans`) of every directed map edge of bank scene b, for `drive_route`.
 
     Returns idx (N, N) int32 (plan row of edge i -> j, -1: no edge), plans (M, K, 2) float32 (each padded with
     its last point) and count (M,) int32 points per plan; M = max(edges, 1) (a zero row where there are none).
@@ -301,8 +301,9 @@ def edge_plans(loop, b: int, K: int) -> tuple[np.ndarray, np.ndarray, np.ndarray
     idx = np.full(adj.shape, -1, np.int32)
     plans = np.zeros((max(len(ii), 1), K, 2), np.float32)
     count = np.zeros(len(plans), np.int32)
-    for m, (i, j) in enumerate(zip(ii, jj)):
-        way = loop._local(b, pos[i], pos[j]) if b in loop.obstacles else np.stack([pos[i], pos[j]])
+    ways = loop.local_plans(b, pos[ii], pos[jj]) if b in loop.obstacles else [np.stack([pos[i], pos[j]])
+                                                                               for i, j in zip(ii, jj)]
+    for m, (i, j, way) in enumerate(zip(ii, jj, ways)):
         if len(way) > K:
             raise ValueError(f"the local plan of map edge {i} -> {j} of scene {b} has {len(way)} points (K = {K})")
         plans[m] = way[-1]
