@@ -212,27 +212,27 @@ class Loop:
             return []
         fits = segment_clearance_np(A, C, self.obstacles[b]) >= self._need()
         short = np.linalg.norm(np.asarray(C) - np.asarray(A), axis=1) < 1e-3
-        return [self._local(b, a, c, straight=bool(s)) for a, c, s in zip(A, C, fits | short)]
+        return [self._local(b, a, c, clears=bool(s)) for a, c, s in zip(A, C, fits | short)]
 
     def _local(self, b: int, a: np.ndarray, c: np.ndarray, anywhere: bool = False,
-               straight: bool | None = None) -> np.ndarray:
+               clears: bool | None = None) -> np.ndarray:
         """Waypoints a ... c: the straight segment when it clears the robot, else a grid path (BFS within a
         window around the segment over cells that clear the robot with a margin, then through passages it
         just fits; with `anywhere` (approaches, which go where no map edge leads), then the same over the
         whole house; shortcut by line of sight); the straight segment when none is found (a map edge the
         window finds no way along is driven as the map has it). Within ESCAPE_M of either end a cell as
         clear as that end passes too, so a robot parked in a tight spot (between a bin and a wall) can
-        leave it. `straight`: whether the segment clears the robot (or is under a millimetre), when known."""
+        leave it. `clears`: whether the straight segment clears the robot (or is under a millimetre), when known."""
         key = (b, *np.round(a, 3), *np.round(c, 3), anywhere)
         if key in self._local_cache:
             return self._local_cache[key]
         obs, need = self.obstacles[b], self._need()
-        if straight is None:
-            straight = bool(segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3)
-        if straight:
-            self._local_cache[key] = np.stack([a, c])
-            return self._local_cache[key]
+        if clears is None:
+            clears = bool(segment_clearance_np(a[None], c[None], obs)[0] >= need or np.linalg.norm(c - a) < 1e-3)
         straight = np.stack([a, c])
+        if clears:
+            self._local_cache[key] = straight
+            return straight
         lo, clear = self._grid(b)
         H, W = clear.shape
         cell = lambda p: (int(np.clip(round((p[0] - lo[0]) / GRID_M), 0, H - 1)),  # noqa: E731
