@@ -555,6 +555,8 @@ class EvalConfig:
     tagger_file: str = ""  # tagger.npz (`ragnav fit-tagger`; "" = ragnav_jax/data/tagger.npz)
     tagger_conf: float = 0.0  # probability above which the tagger's reading overrides the parse (0 = the value
     # fitted with the tagger on seen-split houses, `ragnav fit-tagger`)
+    tagger_clauses: bool = False  # a goal the tagger adds is what the rule parser reads in its own clause (its
+    # attributes, room, relations, sensors), not the bare tagged phrase (language/tagger.py: reconcile)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
     verify_confusion: float = 0.01  # ... and chance the object is named as a similar category

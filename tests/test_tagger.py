@@ -103,6 +103,21 @@ def test_reconcile_adds_a_goal_run_into_another_in_its_place():
     assert out[1].target.attributes == ("green",) and not dropped
 
 
+def test_an_added_goal_keeps_what_its_own_clause_says_of_it():
+    text = "Visit the sofa. Box 2 :: the green kettle in the kitchen near the toaster. Last, the lamp."
+    sgs = tuple(s for s in parse_instruction(text).subgoals if s.target.head in ("sofa", "lamp"))
+    p = probs_for(text, {"sofa": BT, "green": BT, "kettle": IT, "toaster": BA, "lamp": BT})
+    bare, _, added = reconcile(text, sgs, p)
+    out, _, added_c = reconcile(text, sgs, p, clauses=True)
+    assert added == added_c == ("green kettle",)
+    assert [s.target.head for s in out] == ["sofa", "kettle", "lamp"] and [s.index for s in out] == [0, 1, 2]
+    assert bare[1].room is None and not bare[1].target.relations  # the bare phrase
+    kettle = out[1]  # its clause: "the green kettle in the kitchen near the toaster. Last, "
+    assert kettle.target.attributes == ("green",) and kettle.room == "kitchen"
+    assert [(r.type, r.anchor.head) for r in kettle.target.relations] == [("near", "toaster")]
+    assert out[0] == sgs[0] and out[2] == dataclasses.replace(sgs[1], index=2)
+
+
 @pytest.mark.parametrize("p", [0.6, 0.85])
 def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     text = "Go to the sofa, then the fridge, whatever suits you."

@@ -222,15 +222,16 @@ class TaggedReading:
     every instruction once, batched, when the hook is made. `dropped[episode id]` keeps the phrases the
     tagger and the grounder dropped; `added[episode id]` the goal phrases the tagger added."""
 
-    def __init__(self, tagger, episodes, conf: float, then=None):
+    def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False):
         texts = sorted({ep.instruction for ep in episodes})
         self.probs = dict(zip(texts, tagger.word_probs(texts)))
-        self.conf, self.then, self.added, self._dropped = conf, then, {}, {}
+        self.conf, self.then, self.clauses, self.added, self._dropped = conf, then, clauses, {}, {}
 
     def __call__(self, ep, subgoals):
         from ragnav_jax.language.tagger import reconcile
 
-        subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf)
+        subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf,
+                                            self.clauses)
         if dropped:
             self._dropped[ep.id] = dropped
         if added:

@@ -275,7 +275,7 @@ def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, 
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
-        ground = TaggedReading(tagger, episodes, conf, then=ground)
+        ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses)
     return ground
 
 

@@ -39,7 +39,7 @@ def _tagged(chain, cfg):
     probs = tagger.word_probs([chain.instruction])[0]
     ws = words(chain.instruction)
     phrases = [" ".join(ws[i:j]) for i, j in spans(probs.argmax(-1), BT)]
-    subgoals, dropped, added = reconcile(chain.instruction, chain.subgoals, probs, conf)
+    subgoals, dropped, added = reconcile(chain.instruction, chain.subgoals, probs, conf, cfg.eval.tagger_clauses)
     print(f"ragnav: note: tagger (confidence {conf}): goal phrases {phrases}; dropped {list(dropped)}; "
           f"added {list(added)}", file=sys.stderr)
     return dataclasses.replace(chain, subgoals=subgoals, dependencies=derive_dependencies(subgoals, chain.order))

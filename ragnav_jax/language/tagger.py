@@ -43,7 +43,7 @@ MAX_TOKENS = 128
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\S")
 # the template sets a tagger may learn from: the seen templates and the development sets, never `unseen`
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
-                "unseen_dev7", "unseen_dev8")
+                "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
 
 
 def words(text: str) -> list[str]:
@@ -425,7 +425,24 @@ def _structure(t) -> set[str]:
     return out
 
 
-def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9):
+def _clause_subgoal(instruction: str, i: int, end: int | None, held: set[str]):
+    """The subgoal the rule parser reads in the clause from word `i` up to word `end` (the next tagged goal
+    phrase; None = the end of the instruction) whose head shares a word with the tagged phrase `held`, or
+    None: a goal the tagger found keeps what its own clause says of it (attributes, room, relations,
+    sensors, a coordinate hint)."""
+    from ragnav_jax.language.parser import parse_instruction
+    from ragnav_jax.language.types import ParseError
+
+    at = [m.start() for m in _WORD.finditer(instruction)]
+    clause = instruction[at[i] : at[end] if end is not None and end < len(at) else len(instruction)]
+    try:
+        sgs = parse_instruction(clause).subgoals
+    except ParseError:
+        return None
+    return next((sg for sg in sgs if {_stem(w) for w in sg.target.head.split()} & held), None)
+
+
+def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
     is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
 
@@ -435,8 +452,10 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     as a goal). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged
     above `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase)
     at its place in the instruction (two goals read as one), unless its words are all words some kept
-    subgoal accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal). Everything
-    else is left as parsed: where the two agree on the goals, nothing changes.
+    subgoal accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal). With
+    `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
+    back to the bare target. Everything else is left as parsed: where the two agree on the goals, nothing
+    changes.
     """
     from ragnav_jax.language.parser import split_noun_phrase
     from ragnav_jax.language.types import Subgoal, Target
@@ -467,10 +486,13 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     for k, (i, j) in enumerate(goals):
         if k in taken or not sure[k] or held[k] <= accounted:
             continue
-        attrs, head = split_noun_phrase(ws[i:j])
         phrase = " ".join(ws[i:j])
         added.append(phrase)
-        kept.append(Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase))
+        sg = _clause_subgoal(instruction, i, goals[k + 1][0] if k + 1 < len(goals) else None, held[k]) if clauses else None
+        if sg is None:
+            attrs, head = split_noun_phrase(ws[i:j])
+            sg = Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase)
+        kept.append(sg)
         where.append(i)
     if not dropped and not added:
         return tuple(subgoals), (), ()
