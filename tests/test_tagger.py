@@ -118,6 +118,16 @@ def test_an_added_goal_keeps_what_its_own_clause_says_of_it():
     assert out[0] == sgs[0] and out[2] == dataclasses.replace(sgs[1], index=2)
 
 
+def test_line_breaks_are_words_and_clauses_stay_in_place():
+    text = "PICK LIST\n01  the sofa\n\n02  the green kettle in the kitchen\n"
+    assert words(text) == ["PICK", "LIST", "|", "01", "the", "sofa", "|", "02", "the", "green", "kettle", "in", "the",
+                           "kitchen", "|"]
+    sofa = Subgoal(0, Target("sofa", "sofa"), text="the sofa")
+    out, _, added = reconcile(text, (sofa,), probs_for(text, {"sofa": BT, "green": BT, "kettle": IT}), clauses=True)
+    assert added == ("green kettle",) and [s.target.head for s in out] == ["sofa", "kettle"]
+    assert out[1].room == "kitchen" and out[1].target.attributes == ("green",)
+
+
 @pytest.mark.parametrize("p", [0.6, 0.85])
 def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     text = "Go to the sofa, then the fridge, whatever suits you."
@@ -126,9 +136,10 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     assert reconcile(text, sgs, probs, conf=0.9) == (sgs, (), ())
 
 
-def test_training_examples_read_no_held_out_template_set():
-    with pytest.raises(UserError, match="'unseen' is not a training template set"):
-        training_examples(Config(), 1, 0, ("seen", "unseen"))
+@pytest.mark.parametrize("held_out", ["unseen", "unseen_q"])
+def test_training_examples_read_no_held_out_template_set(held_out):
+    with pytest.raises(UserError, match=f"'{held_out}' is not a training template set"):
+        training_examples(Config(), 1, 0, ("seen", held_out))
 
 
 def test_training_examples_read_seen_houses_only():

@@ -10,7 +10,7 @@ labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never `unseen`, the held-out set), labelled from the
+the parser rounds were developed against; never `unseen` or `unseen_q`, the held-out sets), labelled from the
 generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
@@ -40,15 +40,18 @@ TAGS = ("O", "B-T", "I-T", "B-A", "I-A")
 O, BT, IT, BA, IA = range(len(TAGS))
 TAGGER_FORMAT = "ragnav-tagger/1"
 MAX_TOKENS = 128
-_WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\S")
-# the template sets a tagger may learn from: the seen templates and the development sets, never `unseen`
+_WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\n+|\S")
+LINE_BREAK = "|"  # the word a line break is read as: lists and headings are laid out in lines
+# the template sets a tagger may learn from: the seen templates and the development sets, never the held-out
+# `unseen` (P) or `unseen_q` (Q)
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                 "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
 
 
 def words(text: str) -> list[str]:
-    """The tagger's words: runs of letters and digits (with inner ' - .), and single other characters."""
-    return _WORD.findall(text)
+    """The tagger's words: runs of letters and digits (with inner ' - .), single other characters, and
+    LINE_BREAK for each run of line breaks."""
+    return [LINE_BREAK if w[0] == "\n" else w for w in _WORD.findall(text)]
 
 
 def spans(tags: Sequence[int], begin: int = BT) -> list[tuple[int, int]]:
@@ -466,7 +469,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     goals = spans(tags, BT)
     held = [set(stems[i:j]) for i, j in goals]
     sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > conf for i, j in goals]
-    kept, where, dropped, taken = [], [], [], set()
+    kept, where, dropped, added, taken = [], [], [], [], set()
     for sg in subgoals:
         head = {_stem(w) for w in sg.target.head.split()}
         ks = [k for k in range(len(goals)) if head & held[k]]
@@ -482,7 +485,6 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             where.append(goals[k][0])
         kept.append(sg)
     accounted = set().union(*(_structure(sg.target) | {_stem(w) for w in (sg.room or "").split()} for sg in kept))
-    added = []
     for k, (i, j) in enumerate(goals):
         if k in taken or not sure[k] or held[k] <= accounted:
             continue
