@@ -207,6 +207,22 @@ def test_tagged_reading_reads_each_instruction_once_and_hands_on_to_grounding():
     assert hook.dropped == {"e0": ("suits you", "fridge")} and hook.added == {}
 
 
+def test_the_tagger_reads_alone_what_the_parser_cannot():
+    from ragnav_jax.evaluation.grounding import TaggedReading
+    from ragnav_jax.language.episodes import Episode
+    from ragnav_jax.retrieval.evaluate import parse_all, parsed_order
+
+    text = "Go to the sofa at x=3.5 y=, then the green kettle in the kitchen."  # unreadable coordinates
+    eps = [Episode("e0", "s", text, ("a", "b")), Episode("e1", "s", "Go to the lamp.", ("c",))]
+    tagger = FakeTagger({"sofa": BT, "green": BT, "kettle": IT, "lamp": BT})
+    assert parse_all(eps)[0] is None and parsed_order(text) is None
+    sgs = parse_all(eps, TaggedReading(tagger, eps, 0.9, clauses=True))
+    assert [s.target.head for s in sgs[0]] == ["sofa", "kettle"] and [s.index for s in sgs[0]] == [0, 1]
+    assert sgs[0][1].room == "kitchen" and sgs[0][1].target.attributes == ("green",)  # its own clause
+    assert [s.target.head for s in sgs[1]] == ["lamp"]
+    assert parse_all(eps, TaggedReading(FakeTagger({}), eps, 0.9))[0] is None  # no goal read: still unread
+
+
 def test_fitted_confidence_is_the_smallest_that_changes_at_most_the_allowed_share():
     from ragnav_jax.language.tagger import CONF_GRID, fit_conf
 
@@ -265,3 +281,15 @@ def test_parse_cli_reconciles_with_the_tagger(capsys):
     heads = [s["target"]["head"] for s in tagged["subgoals"]]
     assert "cheers" in [s["target"]["head"] for s in plain["subgoals"]] and "cheers" not in heads
     assert heads == ["gramophone", "aquarium heater", "grandfather clock"] and "dropped ['cheers']" in got.err
+
+
+def test_unreadable_instructions_go_to_the_tagger_when_it_reads(capsys):
+    from ragnav_jax.language.episodes import Episode
+    from ragnav_jax.retrieval.commands import check_unparsed
+
+    eps = [Episode("e0", "s", "Go to the sofa at x=3.5 y=, then the lamp.", ("a", "b"))]
+    with pytest.raises(UserError, match="--allow-unparsed"):
+        check_unparsed(eps, False, "eps.jsonl")
+    assert check_unparsed(eps, False, "eps.jsonl", tagger=True) == {"count": 1, "episodes": ["e0"]}
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "e0" in err and "the instruction tagger reads them alone" in err

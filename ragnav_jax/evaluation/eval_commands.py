@@ -95,7 +95,7 @@ def cmd_eval(args, cfg) -> int:
         return eps[:: args.stride][: args.limit or None]
 
     # format errors (file:line, exit 2) and unreadable instructions before any exploring
-    unparsed = check_unparsed(select(load_episodes(args.episodes)), args.allow_unparsed, args.episodes)
+    unparsed = check_unparsed(select(load_episodes(args.episodes)), args.allow_unparsed, args.episodes, cfg.eval.tagger)
     scenes, bank, streams = prepare_inputs(args.scenes, args.memory, out, cfg, args.quiet)
     episodes = select(load_episodes(args.episodes, scenes))
     if not episodes:

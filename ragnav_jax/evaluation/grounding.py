@@ -219,8 +219,9 @@ class MemoryGrounder:
 class TaggedReading:
     """The parse reconciled with the instruction tagger (`language/tagger.py: reconcile`), then handed to
     `then` (the memory grounder) if any: a `ground` hook of goal_items / prepare_batch. The tagger reads
-    every instruction once, batched, when the hook is made. `dropped[episode id]` keeps the phrases the
-    tagger and the grounder dropped; `added[episode id]` the goal phrases the tagger added."""
+    every instruction once, batched, when the hook is made; it also reads, alone, the instructions the parser
+    cannot (`read_unparsed`). `dropped[episode id]` keeps the phrases the tagger and the grounder dropped;
+    `added[episode id]` the goal phrases the tagger added."""
 
     def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False):
         texts = sorted({ep.instruction for ep in episodes})
@@ -237,6 +238,11 @@ class TaggedReading:
         if added:
             self.added[ep.id] = added
         return self.then(ep, subgoals) if self.then is not None else subgoals
+
+    def read_unparsed(self, ep):
+        """The subgoals of an instruction the rule parser cannot read: the goal phrases the tagger is sure of,
+        each read from its own clause with `clauses` (then grounded); None where there are none."""
+        return self(ep, ()) or None
 
     @property
     def dropped(self) -> dict:

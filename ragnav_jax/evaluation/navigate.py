@@ -72,7 +72,8 @@ def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequen
         # the goals run: the subgoals read from the instruction (the Oracle, and an unread instruction: the true ones)
         sgs = cands.subgoals[e]
         G = len(ep.goals) if not spec.reads or sgs is None else len(sgs)
-        strict = ep.order == "strict" if not spec.reads or sgs is None else parsed_order(ep.instruction) == "strict"
+        # an order the parser could not read (the tagger read the goals) is the order they are written in
+        strict = ep.order == "strict" if not spec.reads or sgs is None else parsed_order(ep.instruction) != "free"
         start = loop.nearest(b, sc.start.position[:2])
         ests = ((cands.est[e] if cands.est else []) + [[]] * G)[:G]
         st = EpisodeState(e, ep, b, ex.names.index(ep.scene), sgs, (cands.nodes[e] + [[]] * G)[:G], ests, [0] * G,

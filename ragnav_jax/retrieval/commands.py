@@ -10,18 +10,22 @@ from ragnav_jax.errors import UserError
 from ragnav_jax.io import write_json, write_jsonl
 
 
-def check_unparsed(episodes, allow: bool, source) -> dict:
+def check_unparsed(episodes, allow: bool, source, tagger: bool = False) -> dict:
     """summary.json's "unparsed" entry: the episodes whose instruction the parser cannot read, named on stderr
-    (one line) and refused with a UserError naming --allow-unparsed unless `allow` (they score as misses)."""
+    (one line) and refused with a UserError naming --allow-unparsed unless `allow` (they score as misses) or
+    `tagger` (the instruction tagger reads them alone, `eval.tagger`)."""
     from ragnav_jax.retrieval.evaluate import unparsed
 
     ids = unparsed(episodes)
     if ids:
         shown = ", ".join(ids[:5]) + (f", ... ({len(ids) - 5} more)" if len(ids) > 5 else "")
         what = f"{source}: {len(ids)} of {len(episodes)} episodes have instructions the parser cannot read ({shown})"
-        if not allow:
+        if tagger:
+            print(f"ragnav: note: {what}; the instruction tagger reads them alone (eval.tagger)", file=sys.stderr)
+        elif not allow:
             raise UserError(f"{what}; pass --allow-unparsed to score them as misses")
-        print(f"ragnav: warning: {what}; scored as misses (--allow-unparsed)", file=sys.stderr)
+        else:
+            print(f"ragnav: warning: {what}; scored as misses (--allow-unparsed)", file=sys.stderr)
     return {"count": len(ids), "episodes": ids}
 
 

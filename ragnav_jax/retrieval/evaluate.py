@@ -200,9 +200,14 @@ def parsed_order(instruction: str) -> str | None:
 
 def parse_all(episodes: Sequence[Episode], ground: Callable | None = None) -> list[tuple[Subgoal, ...] | None]:
     """Each episode's parsed subgoals, None where the parser cannot read the instruction (cached per text:
-    a batch command checks for unreadable instructions before it scores them); ground: as in goal_items."""
+    a batch command checks for unreadable instructions before it scores them); ground: as in goal_items. A
+    hook with a `read_unparsed(episode)` method (the instruction tagger's) reads the instructions the parser
+    cannot (None where it reads no goal either)."""
     sgs = [_subgoals(ep.instruction) for ep in episodes]
-    return sgs if ground is None else [None if s is None else ground(ep, s) for ep, s in zip(episodes, sgs)]
+    if ground is None:
+        return sgs
+    alone = getattr(ground, "read_unparsed", lambda ep: None)
+    return [alone(ep) if s is None else ground(ep, s) for ep, s in zip(episodes, sgs)]
 
 
 def unparsed(episodes: Sequence[Episode]) -> list[str]:
