@@ -94,6 +94,14 @@ def test_reconcile_drops_a_remark_read_as_a_goal():
     assert [s.index for s in out] == [0, 1]
 
 
+def test_reconcile_keeps_a_goal_the_houses_memory_names():
+    text = "Go to the sofa, then the lectern."
+    sgs = parse_instruction(text).subgoals
+    p = probs_for(text, {"sofa": BT})  # the tagger is sure "lectern" names no goal
+    assert [s.target.head for s in reconcile(text, sgs, p)[0]] == ["sofa"]
+    assert reconcile(text, sgs, p, known=("sofa", "lectern")) == (sgs, (), ())
+
+
 def test_reconcile_adds_a_goal_run_into_another_in_its_place():
     text = "Visit the sofa, the green kettle and the lamp."
     sgs = tuple(s for s in parse_instruction(text).subgoals if s.target.head != "kettle")

@@ -231,8 +231,9 @@ class TaggedReading:
     def __call__(self, ep, subgoals):
         from ragnav_jax.language.tagger import reconcile
 
+        known = getattr(self.then, "vocab", {}).get(ep.scene, ())  # the names the house's memory recorded
         subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf,
-                                            self.clauses)
+                                            self.clauses, known)
         if dropped:
             self._dropped[ep.id] = dropped
         if added:

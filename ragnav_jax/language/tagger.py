@@ -24,7 +24,7 @@ import dataclasses
 import functools
 import json
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from pathlib import Path
 
 import jax
@@ -445,14 +445,16 @@ def _clause_subgoal(instruction: str, i: int, end: int | None, held: set[str]):
     return next((sg for sg in sgs if {_stem(w) for w in sg.target.head.split()} & held), None)
 
 
-def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False):
+def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False,
+              known: Collection[str] = ()):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
     is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
 
     probs: (n_words, len(TAGS)) of `words(instruction)`. Words are compared by `_stem`. A parsed subgoal
     is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
-    as a goal). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged
+    as a goal), unless its head is one of the `known` names (what the house's memory calls its objects: the
+    memory is evidence the tagger does not have). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged
     above `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase)
     at its place in the instruction (two goals read as one), unless its words are all words some kept
     subgoal accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal). With
@@ -475,7 +477,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         ks = [k for k in range(len(goals)) if head & held[k]]
         if not ks:
             occ = [n for n, w in enumerate(stems) if w in head]
-            if occ and all(probs[n, O] > conf for n in occ):
+            if occ and all(probs[n, O] > conf for n in occ) and sg.target.head not in known:
                 dropped.append(sg.target.phrase)
                 continue
             where.append(occ[0] if occ else 0)
