@@ -24,7 +24,7 @@ from ragnav_jax.filenames import name_problem
 # episodes.split: the sentence templates, seen then unseen (see EpisodesConfig.split).
 EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                   "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10",
-                  "unseen_dev11", "unseen_dev12", "unseen_q", "unseen")
+                  "unseen_dev11", "unseen_dev12", "unseen_q", "unseen_r", "unseen")
 
 ROOM_TYPES = (
     "kitchen",
@@ -193,7 +193,8 @@ class EpisodesConfig:
     # (phrasings_dev12.py, set O: written before any parser change after round 14, by an author who never read
     # the parser; measured fresh with rounds 14 and 15, then developed against in round 16) | unseen
     # (phrasings_heldout.py, set P: written before round 16 was measured, by an author who never read the parser)
-    # | unseen_q (phrasings_q.py, set Q: a further held-out set by an author who never read the parser);
+    # | unseen_q (phrasings_q.py, set Q: a further held-out set by an author who never read the parser)
+    # | unseen_r (phrasings_r.py, set R: another held-out set by an author who never read the parser);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
 
     def __post_init__(self):

@@ -802,7 +802,8 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_dev7": ("phrasings_dev7", "dev7"), "unseen_dev8": ("phrasings_dev8", "dev8"),
                     "unseen_dev9": ("phrasings_dev9", "dev9"), "unseen_dev10": ("phrasings_dev10", "dev10"),
                     "unseen_dev11": ("phrasings_dev11", "dev11"), "unseen_dev12": ("phrasings_dev12", "dev12"),
-                    "unseen_q": ("phrasings_q", "q"), "unseen": ("phrasings_heldout", "heldout")}
+                    "unseen_q": ("phrasings_q", "q"), "unseen_r": ("phrasings_r", "r"),
+                    "unseen": ("phrasings_heldout", "heldout")}
 
 
 def _renderer(split: str, what: str):
