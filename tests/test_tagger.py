@@ -291,6 +291,21 @@ def test_parse_cli_reconciles_with_the_tagger(capsys):
     assert heads == ["gramophone", "aquarium heater", "grandfather clock"] and "dropped ['cheers']" in got.err
 
 
+def test_parse_cli_with_the_tagger_reads_what_the_parser_cannot(capsys):
+    import json
+
+    from ragnav_jax.cli import main
+
+    text = "Go to the sofa at x=3.5 y=, then the green kettle in the kitchen."  # coordinates the parser cannot read
+    assert main(["parse", "--json", text]) == 2
+    assert capsys.readouterr().err.count("\n") == 1
+    assert main(["parse", "--json", "--tagger", "--set", "eval.tagger_clauses=true", text]) == 0
+    got = capsys.readouterr()
+    chain = json.loads(got.out)
+    assert chain["parser"] == "tagger" and chain["order"] == "strict" and "the tagger read it alone" in got.err
+    assert [(s["target"]["head"], s["room"]) for s in chain["subgoals"]] == [("sofa", None), ("kettle", "kitchen")]
+
+
 def test_unreadable_instructions_go_to_the_tagger_when_it_reads(capsys):
     from ragnav_jax.language.episodes import Episode
     from ragnav_jax.retrieval.commands import check_unparsed

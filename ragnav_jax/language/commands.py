@@ -13,12 +13,22 @@ from ragnav_jax.io import write_json
 
 def cmd_parse(args, cfg) -> int:
     from ragnav_jax.language.llm import parse_with_fallback
+    from ragnav_jax.language.types import ParseError, TaskChain
 
-    text = " ".join(args.instruction)
-    chain, note = parse_with_fallback(text, cfg.llm if args.llm else None)
+    text, tag = " ".join(args.instruction), args.tagger
+    try:
+        chain, note = parse_with_fallback(text, cfg.llm if args.llm else None)
+    except ParseError as e:
+        if not tag:
+            raise
+        # as eval.tagger does: the tagger reads alone what the parser cannot, in the order written
+        chain, tag = _tagged(TaskChain(text, (), "strict", parser="tagger"), cfg), False
+        if not chain.subgoals:
+            raise
+        note = f"the parser cannot read it ({e}); the tagger read it alone"
     if note:
         print(f"ragnav: note: {printable(note)}", file=sys.stderr)
-    if args.tagger:
+    if tag:
         chain = _tagged(chain, cfg)
     if not args.json:  # the description quotes the instruction: control characters are shown, not sent
         print(printable(chain.describe(), keep_newlines=True))
