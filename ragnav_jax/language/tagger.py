@@ -10,8 +10,8 @@ labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never the held-out `unseen`, `unseen_q` or `unseen_r`), labelled from the
-generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
+the parser rounds were developed against; never the held-out `unseen`, `unseen_q` or `unseen_r`),
+labelled from the generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
 query and value) and the tag head are trained; the encoder's weights stay those of all-MiniLM-L6-v2,
@@ -454,10 +454,11 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
     as a goal), unless its head is one of the `known` names (what the house's memory calls its objects: the
-    memory is evidence the tagger does not have). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged
-    above `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase)
-    at its place in the instruction (two goals read as one), unless its words are all words some kept
-    subgoal accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal). With
+    memory is evidence the tagger does not have). A tagged goal phrase that no kept subgoal shares a head
+    word with, every word of it tagged above `conf`, is added as a bare target (attributes and head split as
+    the parser splits a noun phrase) at its place in the instruction (two goals read as one), unless its
+    words are all words some kept subgoal accounts for (an anchor, an attribute, a room: "the sunroom's
+    lily" is one goal). With
     `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
     back to the bare target. Everything else is left as parsed: where the two agree on the goals, nothing
     changes.
@@ -492,7 +493,8 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             continue
         phrase = " ".join(ws[i:j])
         added.append(phrase)
-        sg = _clause_subgoal(instruction, i, goals[k + 1][0] if k + 1 < len(goals) else None, held[k]) if clauses else None
+        nxt = goals[k + 1][0] if k + 1 < len(goals) else None
+        sg = _clause_subgoal(instruction, i, nxt, held[k]) if clauses else None
         if sg is None:
             attrs, head = split_noun_phrase(ws[i:j])
             sg = Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase)
