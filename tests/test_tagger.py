@@ -136,6 +136,46 @@ def test_line_breaks_are_words_and_clauses_stay_in_place():
     assert out[1].room == "kitchen" and out[1].target.attributes == ("green",)
 
 
+FRAMES = ("at {x} / {y}", "(post {x} ~ {y})", "marked {x} across and {y} up", "x {x}, y {y}", "grid {x}|{y}")
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(FRAMES), st.integers(-200, 200), st.integers(-200, 200), st.sampled_from(["", ", then", "\n3. the"]))
+def test_a_loose_coordinate_hint_is_the_clauses_two_numbers(frame, x10, y10, tail):
+    from ragnav_jax.language.tagger import loose_hint
+    from ragnav_jax.language.types import Location
+
+    x, y = x10 / 10, y10 / 10
+    clause = "the lamp " + frame.format(x=x, y=y) + tail + " 4"  # a number past a line break is another line's
+    got = loose_hint(clause)
+    assert (got == Location(x, y)) if "\n" in tail else got is None  # three numbers on one line: none
+    assert loose_hint("the lamp " + frame.format(x=x, y=y)) == Location(x, y)
+
+
+@pytest.mark.parametrize("clause,used", [
+    ("the dryer at 40.0 degrees and 35 %", ()),  # readings carry units
+    ("the toaster at 10:05, 3", ()),  # a time
+    ("the plant with NDVI above 0.4, bed 7", (0.4,)),  # a value a sensor constraint reads
+    ("the sofa, the third of 5", ()),  # one number
+])
+def test_numbers_that_are_no_coordinates_give_no_hint(clause, used):
+    from ragnav_jax.language.tagger import loose_hint
+
+    assert loose_hint(clause, used) is None
+
+
+def test_a_goal_without_a_hint_takes_its_clauses_loose_numbers():
+    from ragnav_jax.language.types import Location
+
+    text = "Go to the sofa, then the lamp at post 3.5 / 2.0."
+    sgs = parse_instruction(text).subgoals
+    assert [s.location for s in sgs] == [None, None]
+    p = probs_for(text, {"sofa": BT, "lamp": BT})
+    assert reconcile(text, sgs, p) == (sgs, (), ())  # without clauses nothing changes
+    out, dropped, added = reconcile(text, sgs, p, clauses=True)
+    assert [s.location for s in out] == [None, Location(3.5, 2.0)] and not dropped and not added
+
+
 @pytest.mark.parametrize("p", [0.6, 0.85])
 def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     text = "Go to the sofa, then the fridge, whatever suits you."
@@ -144,7 +184,7 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     assert reconcile(text, sgs, probs, conf=0.9) == (sgs, (), ())
 
 
-@pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r"])
+@pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r", "unseen_s"])
 def test_training_examples_read_no_held_out_template_set(held_out):
     with pytest.raises(UserError, match=f"'{held_out}' is not a training template set"):
         training_examples(Config(), 1, 0, ("seen", held_out))

@@ -10,7 +10,7 @@ labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never the held-out `unseen`, `unseen_q` or `unseen_r`),
+the parser rounds were developed against; never the held-out `unseen`, `unseen_q`, `unseen_r` or `unseen_s`),
 labelled from the generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
@@ -43,7 +43,7 @@ MAX_TOKENS = 128
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\n+|\S")
 LINE_BREAK = "|"  # the word a line break is read as: lists and headings are laid out in lines
 # the template sets a tagger may learn from: the seen templates and the development sets, never the held-out
-# `unseen` (P), `unseen_q` (Q) or `unseen_r` (R)
+# `unseen` (P), `unseen_q` (Q), `unseen_r` (R) or `unseen_s` (S)
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                 "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
 
@@ -445,6 +445,23 @@ def _clause_subgoal(instruction: str, i: int, end: int | None, held: set[str]):
     return next((sg for sg in sgs if {_stem(w) for w in sg.target.head.split()} & held), None)
 
 
+_NUMBER = re.compile(r"(?<![\w.:/])-?\d+(?:\.\d+)?(?![\w:]|\.\d)")
+_UNIT = re.compile(r"\s*(?:°|%|deg\b|degrees?\b|celsius|fahrenheit|percent|per cent|ppm|db\b|dba\b|lux\b|kw\b|watts?\b|w\b"
+                   r"|kg\b|hpa\b|[cf]\b)", re.IGNORECASE)
+
+
+def loose_hint(clause: str, used: Sequence[float] = ()):
+    """A coordinate hint (x then y) from a goal's clause, up to its first line break: its two numbers, when it
+    holds exactly two that carry no unit of a reading and are no value a sensor constraint already reads
+    (`used`), in whatever words they are framed ("waypoint 3.5 | 2", "plan position 7.6 E / 7.9 N"); else None."""
+    from ragnav_jax.language.types import Location
+
+    line = clause.split("\n", 1)[0]
+    nums = [float(m.group()) for m in _NUMBER.finditer(line) if not _UNIT.match(line, m.end())]
+    nums = [v for v in nums if all(abs(v - u) > 1e-9 for u in used)]
+    return Location(nums[0], nums[1]) if len(nums) == 2 else None
+
+
 def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False,
               known: Collection[str] = ()):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
@@ -460,7 +477,8 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     words are all words some kept subgoal accounts for (an anchor, an attribute, a room: "the sunroom's
     lily" is one goal). With
     `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
-    back to the bare target. Everything else is left as parsed: where the two agree on the goals, nothing
+    back to the bare target, and a goal read without a coordinate hint takes the two numbers its clause (from
+    its tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`). Everything else is left as parsed: where the two agree on the goals, nothing
     changes.
     """
     from ragnav_jax.language.parser import split_noun_phrase
@@ -500,8 +518,18 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             sg = Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase)
         kept.append(sg)
         where.append(i)
-    if not dropped and not added:
-        return tuple(subgoals), (), ()
     order = sorted(range(len(kept)), key=lambda n: (where[n], n))
+    hinted = False
+    if clauses:  # a goal read without a coordinate hint takes two numbers its own clause leaves unplaced
+        at = [m.start() for m in _WORD.finditer(instruction)] + [len(instruction)]
+        starts = [min(where[n], len(at) - 1) for n in order] + [len(at) - 1]
+        for pos, n in enumerate(order):
+            if kept[n].location is None:
+                used = [c.value for c in kept[n].sensors if c.value is not None]
+                loc = loose_hint(instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]], used)
+                if loc is not None:
+                    kept[n], hinted = dataclasses.replace(kept[n], location=loc), True
+    if not dropped and not added and not hinted:
+        return tuple(subgoals), (), ()
     out = tuple(dataclasses.replace(kept[n], index=m) for m, n in enumerate(order))
     return out, tuple(dropped), tuple(added)
