@@ -28,6 +28,21 @@ def check_goal(text: str, sg: Subgoal, rel_words: dict, room: str) -> None:
         assert _has(text, room.format(sg.room)), text
 
 
+def check_goal_layout(text: str, sg: Subgoal, rel_words: dict, endings: tuple[str, ...] = (",", ";", "—")) -> None:
+    """check_goal, and the layout every set after P keeps: no dangling separator or doubled space or comma, the
+    goal's own head before its anchors' (or among them), the room before any relation, brackets balanced (an
+    anchor's own relations stay with it)."""
+    check_goal(text, sg, rel_words, "{}")
+    assert not text.endswith(endings) and "  " not in text and ",," not in text, text
+    low = text.lower()
+    assert low.find(sg.target.head) <= min((low.find(r.anchor.head) for r in sg.target.relations), default=10**6) or \
+        any(sg.target.head in t.head for r in sg.target.relations for t in _all_targets(r.anchor))
+    if sg.room and sg.target.relations:
+        first_anchor = min(low.rfind(r.anchor.phrase) for r in sg.target.relations)
+        assert low.find(sg.room) < first_anchor, text
+    assert text.count("(") == text.count(")"), text
+
+
 def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str, unit_pct: str = r"%|percent") -> None:
     """The phrase names the constraint it says it wrote: the number, the comparator (read by `comparator`), the unit
     (regexes `unit_c`, `unit_pct`); a superlative names no number and says low (regex `low`) exactly when it is a
