@@ -2,6 +2,7 @@
 the simulated trajectory (not the plan), absent targets are recorded failures, bad files exit 2."""
 
 import dataclasses
+import json
 
 import numpy as np
 import pytest
@@ -15,6 +16,7 @@ from ragnav_jax.evaluation.execute import make_executor
 from ragnav_jax.evaluation.host_loop import plan_order
 from ragnav_jax.evaluation.methods import NAV_METHODS, method_spec
 from ragnav_jax.evaluation.navigate import evaluate_navigation
+from ragnav_jax.evaluation.verify import FITTED_PATH
 from ragnav_jax.language.episodes import Episode, load_episodes
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.memory.build import build_bank
@@ -25,9 +27,15 @@ EPISODES = example_scene_path().parent / "episodes.jsonl"
 
 
 @pytest.fixture(scope="module")
-def setup(apartment):
-    # 4 lanes, as in test_loop_program.py's module: fewer episodes fill whole batches (the bucket test below)
-    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4"])
+def setup(apartment, tmp_path_factory):
+    # 4 lanes, as in test_loop_program.py's module: fewer episodes fill whole batches (the bucket test below).
+    # The synthetic stream's memory never recorded the sofa (nor any name near it): with the fitted tau_bare
+    # grounding would read "the sofa" as a remark, so the bare-goal rule is off here (tau_bare 0)
+    fitted = json.loads(FITTED_PATH.read_text())
+    fitted["verifier"]["hashing"]["params"]["tau_bare"] = 0.0
+    path = tmp_path_factory.mktemp("fitted") / "fitted.json"
+    path.write_text(json.dumps(fitted))
+    cfg = load_config(None, ["memory.embedder=hashing", "eval.batch_size=4", f"eval.verifier_file={path}"])
     stream = synthetic_stream(apartment)
     emb = HashingEmbedder(dim=cfg.memory.hashing_dim)
     bank, _ = build_bank([apartment], [stream], cfg, embedder=emb)
@@ -88,6 +96,12 @@ def test_absent_target_is_a_recorded_failure(setup, apartment):
     r = rows[0]
     assert not r["success"] and r["goal_status"][0].startswith("failed") and r["reason"] != "success"
     assert r["rejected_candidates"] >= 1
+    # with the fitted bare-goal rule no recorded name comes near "grand piano": grounding reports it as a remark
+    # and the robot goes on to the fridge; the episode is a failure all the same
+    fitted = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, verifier_file=""))
+    r = evaluate_navigation(bank, [apartment], [ep], emb, fitted, "ragnav", executor=ex)[0][0]
+    assert r["ungrounded"] == ["grand piano"] and r["subgoal_status"] == ["found"]
+    assert not r["success"] and r["goal_status"] == ["missed", "found"] and r["reason"] != "success"
 
 
 def test_a_remark_read_as_a_goal_is_dropped_before_it_costs_the_episode(setup, apartment):

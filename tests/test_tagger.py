@@ -4,6 +4,7 @@ the adapters, fitting on seen houses only, and the fitted file."""
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -18,8 +19,11 @@ from ragnav_jax.language.tagger import (
     BT,
     IT,
     TAGS,
+    Fillers,
     O,
     augment,
+    filler_word,
+    filler_words,
     label_words,
     reconcile,
     spans,
@@ -65,12 +69,31 @@ def test_labels_of_an_instruction_missing_a_goal_are_refused():
 def test_augmentation_replaces_each_phrase_consistently_and_nothing_else(seed):
     text = "First the lamp next to the sofa, then the sofa and the red mug."
     ws, tags = label_words(text, parse_instruction(text))
-    vocab = [f"w{k}" for k in range(50)]
-    out = augment(ws, tags, np.random.default_rng(seed), vocab)
-    assert [a for a, t in zip(out, tags) if t == O] == [a for a, t in zip(ws, tags) if t == O]
-    assert all(a in vocab for a, t in zip(out, tags) if t != O)
-    sofas = [out[i] for i, w in enumerate(ws) if w == "sofa"]
-    assert len(set(sofas)) == 1  # the same phrase, the same replacement, anchor or goal
+    vocab = tuple(f"w{k}" for k in range(50))
+    for fillers in (Fillers(vocab), Fillers(vocab, ("ab", "cd"), ("xy", "zq"))):
+        out = augment(ws, tags, np.random.default_rng(seed), fillers)
+        assert [a for a, t in zip(out, tags) if t == O] == [a for a, t in zip(ws, tags) if t == O]
+        pieces = re.compile(r"(?:ab|cd)(?:xy|zq){1,2}")
+        assert all(a in vocab or (fillers.starts and (pieces.fullmatch(a) or (a.count("-") == 1 and set(a.split("-"))
+                                                                              <= set(vocab))))
+                   for a, t in zip(out, tags) if t != O)
+        sofas = [out[i] for i, w in enumerate(ws) if w == "sofa"]
+        assert len(set(sofas)) == 1  # the same phrase, the same replacement, anchor or goal
+
+
+def test_rare_fillers_are_split_into_pieces_and_hyphenated_like_unseen_names():
+    from ragnav_jax.memory.encoder import MiniLMEmbedder
+
+    tok = MiniLMEmbedder().tokenizer
+    f = filler_words(tok)
+    rng = np.random.default_rng(0)
+    made = [filler_word(rng, f) for _ in range(300)]
+    whole = sum(len(tok.encode(w, add_special_tokens=False).tokens) == 1 for w in made)
+    hyphen = sum("-" in w for w in made)
+    assert 60 < whole < 140 and 60 < hyphen < 140  # a third each, roughly
+    assert all(len(tok.encode(w, add_special_tokens=False).tokens) >= 2 for w in made if "-" not in w
+               and w not in f.words)  # the rare ones come in pieces, as 'credenza' does
+    assert filler_words(tok, pieces=False).starts == ()
 
 
 def test_reconcile_changes_nothing_where_tagger_and_parse_agree():
@@ -100,6 +123,15 @@ def test_reconcile_keeps_a_goal_the_houses_memory_names():
     p = probs_for(text, {"sofa": BT})  # the tagger is sure "lectern" names no goal
     assert [s.target.head for s in reconcile(text, sgs, p)[0]] == ["sofa"]
     assert reconcile(text, sgs, p, known=("sofa", "lectern")) == (sgs, (), ())
+
+
+def test_reconcile_drops_an_anchor_read_as_a_goal_even_when_the_memory_names_it():
+    text = "Go to the sofa right next door to the lamp, then the fridge."
+    sgs = (*(s for s in parse_instruction("Go to the sofa, then the fridge.").subgoals),)
+    sgs = (sgs[0], Subgoal(1, Target("lamp", "lamp"), text="the lamp"), dataclasses.replace(sgs[1], index=2))
+    p = probs_for(text, {"sofa": BT, "lamp": BA, "fridge": BT})
+    out, dropped, _ = reconcile(text, sgs, p, known=("sofa", "lamp", "fridge"))
+    assert [s.target.head for s in out] == ["sofa", "fridge"] and dropped == ("lamp",)
 
 
 def test_reconcile_adds_a_goal_run_into_another_in_its_place():
@@ -174,6 +206,37 @@ def test_a_goal_without_a_hint_takes_its_clauses_loose_numbers():
     assert reconcile(text, sgs, p) == (sgs, (), ())  # without clauses nothing changes
     out, dropped, added = reconcile(text, sgs, p, clauses=True)
     assert [s.location for s in out] == [None, Location(3.5, 2.0)] and not dropped and not added
+
+
+@pytest.mark.parametrize("text,tagged,want", [
+    ("Go to the sofa (think teal), then the lamp.", {"sofa": BT, "lamp": BT}, [("teal",), ()]),
+    ("Go to the sofa, showing as switched on, then the lamp.", {"sofa": BT, "lamp": BT}, [("switched on",), ()]),
+    ("Go to the sofa near the lamp (as found: closed), then the kettle.", {"sofa": BT, "lamp": BA, "kettle": BT},
+     [(), ()]),  # after an anchor: the anchor's
+    ("Go to the sofa\nteal things: the lamp", {"sofa": BT, "lamp": BT}, [(), ()]),  # not past a line break
+    ("Go to the teal sofa (think teal), then the lamp.", {"teal": BT, "sofa": IT, "lamp": BT}, [("teal",), ()]),
+    ("Go to the sofa (think mauve), then the lamp.", {"sofa": BT, "lamp": BT}, [(), ()]),  # no caption says mauve
+])
+def test_a_goal_takes_the_descriptors_its_clause_says_of_it(text, tagged, want):
+    sgs = parse_instruction("Go to the sofa, then the lamp." if "kettle" not in text else
+                            "Go to the sofa, then the kettle.").subgoals
+    sgs = tuple(dataclasses.replace(s, target=dataclasses.replace(s.target, attributes=("teal",), phrase="teal sofa"))
+                if "teal sofa" in text and s.index == 0 else s for s in sgs)
+    p = probs_for(text, tagged)
+    out, _, _ = reconcile(text, sgs, p, clauses=True, descriptors={"teal", "closed", "switched on"})
+    assert [s.target.attributes for s in out] == want  # "teal sofa (think teal)": said once
+    assert reconcile(text, sgs, p, clauses=True)[0] == sgs  # no descriptors, no change
+    for s, a in zip(out, want):
+        assert all(x in s.target.phrase for x in a)
+
+
+def test_caption_descriptors_are_the_words_before_a_name_and_the_state_after_that_is():
+    from ragnav_jax.evaluation.grounding import caption_descriptors
+
+    name_of = {"lacquered ivory shelf unit": "shelf unit", "matte drying rack that is full": "drying rack",
+               "steam iron that is switched off at about 20 °C": "steam iron", "a sofa": "sofa",
+               "glossy linen cupboard at 33% humidity": "linen cupboard"}
+    assert caption_descriptors(name_of) == {"lacquered", "ivory", "matte", "full", "switched off", "glossy"}
 
 
 @pytest.mark.parametrize("p", [0.6, 0.85])

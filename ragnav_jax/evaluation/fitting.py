@@ -31,6 +31,7 @@ from ragnav_jax.language.episodes import FRAMES, HYPERNYMS, SYNONYMS, category_m
 GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
 GRID_MARGIN = np.round(np.arange(0.0, 0.41, 0.02), 2)
 GATE_RECALL = 0.95
+BARE_RECALL = 0.99  # tau_bare keeps this share of the seen goals' and anchors' heads
 
 
 def balanced_accuracy(pred: np.ndarray, label: np.ndarray) -> float:
@@ -145,7 +146,7 @@ def ground_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 
 
 
 def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> dict:
-    """Fits tau_head / head_margin, tau_kind, room_margin / room_gate and tau_ground on seen-split houses;
+    """Fits tau_head / head_margin, tau_kind, room_margin / room_gate, tau_ground and tau_bare on seen-split houses;
     returns the fitted.json entry."""
     H, Kd, R, G = training_rows(cfg, embedder, scenes, seed, looks)
     Gr = ground_rows(cfg, embedder, scenes, seed, looks)
@@ -158,8 +159,14 @@ def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int =
     # the gate: the smallest margin to the house-wide best room that keeps 95% of the true rooms
     room_gate = next((m for m in GRID_MARGIN if (G <= m).mean() >= GATE_RECALL), GRID_MARGIN[-1])
     (tau_ground,), acc_ground = plateau_centre({(t,): balanced_accuracy(Gr[:, 0] >= t, Gr[:, 1] > 0) for t in GRID_TAU})
+    # a bare goal (its name and nothing else) is a remark below the largest threshold that keeps 99% of the seen
+    # heads: with a sentence encoder near tau_ground, with the hashing one (a plural is as far from a name as a
+    # remark is) far lower
+    heads = Gr[Gr[:, 1] > 0, 0]
+    tau_bare = max([0.0] + [t for t in GRID_TAU if (heads >= t).mean() >= BARE_RECALL])
     params = VerifierParams(tau_head=float(tau_head), head_margin=float(head_margin), tau_kind=float(tau_kind),
-                            room_margin=float(room_margin), room_gate=float(room_gate), tau_ground=float(tau_ground))
+                            room_margin=float(room_margin), room_gate=float(room_gate), tau_ground=float(tau_ground),
+                            tau_bare=float(tau_bare))
     return {
         "params": dataclasses.asdict(params),
         "balanced_accuracy": {"name": round(acc_name, 4), "attribute": round(acc_kind, 4), "room": round(acc_room, 4),

@@ -78,6 +78,7 @@ class VerifierParams:
     room_margin: float = 0.05
     room_gate: float = 0.1  # an unknown room name's room also fits within this of the house-wide best
     tau_ground: float = 0.5  # a run of instruction words names a recorded object (grounding.py)
+    tau_bare: float = 0.0  # a goal with nothing but its name names a recorded object (grounding.py; 0: always)
 
 
 def load_fitted(embedder_name: str, path: str | Path | None = None) -> VerifierParams:

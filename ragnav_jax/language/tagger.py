@@ -113,23 +113,52 @@ def label_words(instruction: str, truth) -> tuple[list[str], list[int]] | None:
     return ws, tags
 
 
-def augment(ws: list[str], tags: list[int], rng: np.random.Generator, vocab: Sequence[str]) -> list[str]:
-    """The words with every tagged phrase replaced by random vocabulary words (one replacement per phrase)."""
+@dataclasses.dataclass(frozen=True)
+class Fillers:
+    """What a goal or anchor phrase is replaced by in augmented examples (`filler_words`)."""
+
+    words: tuple[str, ...]  # whole words of the encoder's vocabulary
+    starts: tuple[str, ...] = ()  # word-initial pieces ("cr", "le"); empty: whole words only
+    tails: tuple[str, ...] = ()  # continuation pieces, without '##' ("ede", "nza")
+
+
+def filler_word(rng: np.random.Generator, f: Fillers) -> str:
+    """One stand-in name word: a whole vocabulary word, a rare word the encoder splits into two or three pieces
+    ("credenza": cr ##ede ##nza), or a hyphenated pair ("night-light"), a third each (whole words only when
+    `f` has no pieces). Names of houses nobody fitted on are often rare or hyphenated words; a tagger that met
+    only whole-vocabulary stand-ins learns that a word in pieces is never a name."""
+    kind = int(rng.integers(0, 3)) if f.starts and f.tails else 0
+    if kind == 1:
+        return f.starts[rng.integers(len(f.starts))] + "".join(f.tails[k] for k in rng.integers(0, len(f.tails),
+                                                                                                  rng.integers(1, 3)))
+    pair = kind == 2
+    return "-".join(f.words[k] for k in rng.integers(0, len(f.words), 1 + pair))
+
+
+def augment(ws: list[str], tags: list[int], rng: np.random.Generator, fillers: Fillers) -> list[str]:
+    """The words with every tagged phrase replaced by random stand-in words (`filler_word`; one replacement
+    per phrase)."""
     out, sub = list(ws), {}
     for begin in (BT, BA):
         for i, j in spans(tags, begin):
             key = " ".join(ws[i:j])
             if key not in sub:
-                sub[key] = [vocab[k] for k in rng.integers(0, len(vocab), j - i)]
+                sub[key] = [filler_word(rng, fillers) for _ in range(j - i)]
             out[i:j] = sub[key]
     return out
 
 
-def filler_vocabulary(tokenizer) -> list[str]:
-    """Whole lower-case words of 3-12 letters in the encoder's vocabulary that are not closed-class words."""
+def filler_words(tokenizer, pieces: bool = True) -> Fillers:
+    """Whole lower-case words of 3-12 letters in the encoder's vocabulary that are not closed-class words and,
+    with `pieces`, its word-initial pieces of 2-6 letters and continuation pieces of 2-5 letters."""
     from ragnav_jax.language.lexicon import CLOSED_CLASS
 
-    return sorted(w for w in tokenizer.get_vocab() if re.fullmatch("[a-z]{3,12}", w) and w not in CLOSED_CLASS)
+    vocab = tokenizer.get_vocab()
+    words = tuple(sorted(w for w in vocab if re.fullmatch("[a-z]{3,12}", w) and w not in CLOSED_CLASS))
+    if not pieces:
+        return Fillers(words)
+    return Fillers(words, tuple(sorted(w for w in vocab if re.fullmatch("[a-z]{2,6}", w))),
+                   tuple(sorted(w[2:] for w in vocab if re.fullmatch("##[a-z]{2,5}", w))))
 
 
 def check_splits(splits: Sequence[str]) -> None:
@@ -224,6 +253,7 @@ class FitSettings:
     batch: int = 16
     lr: float = 1e-3
     augment: float = 1.0  # augmented copies per example (0 = none)
+    rare_fillers: bool = True  # stand-ins also rare words in pieces and hyphenated pairs (False: whole words only)
 
 
 def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str] = TRAIN_SPLITS,
@@ -234,11 +264,11 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
     base = MiniLMEmbedder()
     rng = np.random.default_rng(settings.seed)
     examples = training_examples(cfg, settings.scenes, settings.seed, splits)
-    vocab = filler_vocabulary(base.tokenizer)
+    fillers = filler_words(base.tokenizer, settings.rare_fillers)
     ws = [w for w, _ in examples]
     tg = [t for _, t in examples]
     for _ in range(int(settings.augment)):
-        ws += [augment(w, t, rng, vocab) for w, t in examples]
+        ws += [augment(w, t, rng, fillers) for w, t in examples]
         tg += [t for _, t in examples]
     ids, first = encode_words(base.tokenizer, ws)
     y = np.where(first >= 0, np.take_along_axis(_pad_tags(tg), np.maximum(first, 0), 1), -1).astype(np.int32)
@@ -462,8 +492,28 @@ def loose_hint(clause: str, used: Sequence[float] = ()):
     return Location(nums[0], nums[1]) if len(nums) == 2 else None
 
 
+def clause_descriptors(ws: Sequence[str], tags: Sequence[int], lo: int, hi: int, sg,
+                       descriptors: Collection[str]) -> tuple[str, ...]:
+    """What a goal's clause says of it after its phrase and the parse did not read: the `descriptors` (words
+    and states the house's captions describe things by, `caption_descriptors`) among the words `ws[lo:hi]`
+    the tagger left untagged, up to the first anchor or line break (a modifier after an anchor is the
+    anchor's: "the bin near the freezer (as found: closed)"). ws: lower-case `words`; tags: argmax per word."""
+    have = _structure(sg.target) | {_stem(w) for w in (sg.room or "").split()}
+    out, i = [], lo
+    while i < hi and tags[i] not in (BA, IA) and ws[i] != LINE_BREAK:
+        pair = " ".join(ws[i : i + 2]) if i + 1 < hi and tags[i + 1] == O else ""
+        for phrase, n in ((pair, 2), (ws[i].replace("-", " "), 1)):
+            if phrase and tags[i] == O and phrase in descriptors and not {_stem(w) for w in phrase.split()} <= have:
+                out.append(phrase)
+                have |= {_stem(w) for w in phrase.split()}
+                i += n - 1
+                break
+        i += 1
+    return tuple(out)
+
+
 def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False,
-              known: Collection[str] = ()):
+              known: Collection[str] = (), descriptors: Collection[str] = ()):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
     is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
 
@@ -471,15 +521,19 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
     as a goal), unless its head is one of the `known` names (what the house's memory calls its objects: the
-    memory is evidence the tagger does not have). A tagged goal phrase that no kept subgoal shares a head
-    word with, every word of it tagged above `conf`, is added as a bare target (attributes and head split as
-    the parser splits a noun phrase) at its place in the instruction (two goals read as one), unless its
-    words are all words some kept subgoal accounts for (an anchor, an attribute, a room: "the sunroom's
-    lily" is one goal). With
-    `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
-    back to the bare target, and a goal read without a coordinate hint takes the two numbers its clause (from
-    its tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`). Everything else is left as parsed: where the two agree on the goals, nothing
-    changes.
+    memory is evidence the tagger does not have), and when every occurrence is an anchor's (B-A or I-A) above
+    `conf`, known or not (an anchor read as a goal of its own: "the bureau, right next door to the magazine
+    rack"). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged above
+    `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase) at its
+    place in the instruction (two goals read as one), unless its words are all words some kept subgoal
+    accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal).
+
+    With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
+    back to the bare target; a goal read without a coordinate hint takes the two numbers its clause (from its
+    tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); and a goal tagged in place takes
+    the `descriptors` (what the house's captions describe things by) its clause says of it after its phrase
+    and the parse missed ("the freezer (think lilac)", `clause_descriptors`). Everything else is left as
+    parsed: where the two agree on the goals, nothing changes.
     """
     from ragnav_jax.language.parser import split_noun_phrase
     from ragnav_jax.language.types import Subgoal, Target
@@ -490,20 +544,23 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     goals = spans(tags, BT)
     held = [set(stems[i:j]) for i, j in goals]
     sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > conf for i, j in goals]
-    kept, where, dropped, added, taken = [], [], [], [], set()
+    kept, where, ends, dropped, added, taken = [], [], [], [], [], set()
     for sg in subgoals:
         head = {_stem(w) for w in sg.target.head.split()}
         ks = [k for k in range(len(goals)) if head & held[k]]
         if not ks:
             occ = [n for n, w in enumerate(stems) if w in head]
-            if occ and all(probs[n, O] > conf for n in occ) and sg.target.head not in known:
+            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in known
+                        or all(probs[n, BA] + probs[n, IA] > conf for n in occ)):
                 dropped.append(sg.target.phrase)
                 continue
             where.append(occ[0] if occ else 0)
+            ends.append(None)
         else:
             k = next((k for k in ks if k not in taken), ks[0])
             taken.add(k)
             where.append(goals[k][0])
+            ends.append(goals[k][1])
         kept.append(sg)
     accounted = set().union(*(_structure(sg.target) | {_stem(w) for w in (sg.room or "").split()} for sg in kept))
     for k, (i, j) in enumerate(goals):
@@ -518,6 +575,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             sg = Subgoal(0, Target(phrase, head, tuple(attrs)), text=phrase)
         kept.append(sg)
         where.append(i)
+        ends.append(j)
     order = sorted(range(len(kept)), key=lambda n: (where[n], n))
     hinted = False
     if clauses:  # a goal read without a coordinate hint takes two numbers its own clause leaves unplaced
@@ -529,6 +587,13 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
                 loc = loose_hint(instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]], used)
                 if loc is not None:
                     kept[n], hinted = dataclasses.replace(kept[n], location=loc), True
+        for pos, n in enumerate(order):  # and the descriptors its clause says of it after its phrase
+            if ends[n] is not None and descriptors:
+                more = clause_descriptors(ws, tags, ends[n], max(ends[n], starts[pos + 1]), kept[n], descriptors)
+                if more:
+                    t = kept[n].target
+                    kept[n], hinted = dataclasses.replace(kept[n], target=dataclasses.replace(
+                        t, attributes=t.attributes + more, phrase=" ".join([*more, t.phrase]))), True
     if not dropped and not added and not hinted:
         return tuple(subgoals), (), ()
     out = tuple(dataclasses.replace(kept[n], index=m) for m, n in enumerate(order))
