@@ -17,6 +17,7 @@ from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.language.tagger import (
     BA,
     BT,
+    IA,
     IT,
     TAGS,
     Fillers,
@@ -132,6 +133,14 @@ def test_reconcile_drops_an_anchor_read_as_a_goal_even_when_the_memory_names_it(
     p = probs_for(text, {"sofa": BT, "lamp": BA, "fridge": BT})
     out, dropped, _ = reconcile(text, sgs, p, known=("sofa", "lamp", "fridge"))
     assert [s.target.head for s in out] == ["sofa", "fridge"] and dropped == ("lamp",)
+    # an anchor's clause read as a goal: its words are the anchor's and untagged ones
+    text = "Start: the sofa, which is a stride or two from the hi-fi speaker | Finish: the fridge"
+    odd = Subgoal(1, Target("stride or two from the hi-fi speaker", "stride or two from the hi-fi speaker"),
+                  text="a stride or two from the hi-fi speaker")
+    sgs = (sgs[0], odd, sgs[2])
+    p = probs_for(text, {"sofa": BT, "hi-fi": BA, "speaker": IA, "fridge": BT})
+    out, dropped, _ = reconcile(text, sgs, p, known=("sofa", "hi-fi speaker", "fridge"))
+    assert [s.target.head for s in out] == ["sofa", "fridge"] and dropped == (odd.target.phrase,)
 
 
 def test_reconcile_adds_a_goal_run_into_another_in_its_place():

@@ -523,7 +523,8 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     as a goal), unless its head is one of the `known` names (what the house's memory calls its objects: the
     memory is evidence the tagger does not have), and when every occurrence is an anchor's (B-A or I-A) above
     `conf`, known or not (an anchor read as a goal of its own: "the bureau, right next door to the magazine
-    rack"). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged above
+    rack"), or some are and the rest are O ("a stride or two from the switched-off hi-fi speaker": an anchor's
+    clause). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged above
     `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase) at its
     place in the instruction (two goals read as one), unless its words are all words some kept subgoal
     accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal).
@@ -550,8 +551,9 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         ks = [k for k in range(len(goals)) if head & held[k]]
         if not ks:
             occ = [n for n, w in enumerate(stems) if w in head]
-            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in known
-                        or all(probs[n, BA] + probs[n, IA] > conf for n in occ)):
+            anchor = [probs[n, BA] + probs[n, IA] > conf for n in occ]
+            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in known or all(anchor)
+                        or any(anchor) and all(probs[n, O] + probs[n, BA] + probs[n, IA] > conf for n in occ)):
                 dropped.append(sg.target.phrase)
                 continue
             where.append(occ[0] if occ else 0)
