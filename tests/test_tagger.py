@@ -143,6 +143,19 @@ def test_reconcile_drops_an_anchor_read_as_a_goal_even_when_the_memory_names_it(
     assert [s.target.head for s in out] == ["sofa", "fridge"] and dropped == (odd.target.phrase,)
 
 
+def test_a_goal_phrase_likelier_than_not_is_added_and_a_named_goal_kept():
+    text = "Visit the sofa, the green kettle and the light."
+    sgs = tuple(s for s in parse_instruction(text).subgoals if s.target.head != "kettle")
+    p = probs_for(text, {"sofa": BT, "green": BT, "kettle": IT}, p=0.6)  # "light": O at 0.6, not sure
+    out, _, added = reconcile(text, sgs, p, conf=0.9)
+    assert [s.target.head for s in out] == ["sofa", "kettle", "light"] and added == ("green kettle",)
+    sure_o = probs_for(text, {"sofa": BT, "green": BT, "kettle": IT}, p=0.99)
+    assert [s.target.head for s in reconcile(text, sgs, sure_o, conf=0.9)[0]] == ["sofa", "kettle"]
+    # the memory records a "work light": its last word names it, and the parsed goal stays
+    named = reconcile(text, sgs, sure_o, conf=0.9, known=("sofa", "work light"))[0]
+    assert [s.target.head for s in named] == ["sofa", "kettle", "light"]
+
+
 def test_reconcile_adds_a_goal_run_into_another_in_its_place():
     text = "Visit the sofa, the green kettle and the lamp."
     sgs = tuple(s for s in parse_instruction(text).subgoals if s.target.head != "kettle")
@@ -256,7 +269,7 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     assert reconcile(text, sgs, probs, conf=0.9) == (sgs, (), ())
 
 
-@pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t"])
+@pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u"])
 def test_training_examples_read_no_held_out_template_set(held_out):
     with pytest.raises(UserError, match=f"'{held_out}' is not a training template set"):
         training_examples(Config(), 1, 0, ("seen", held_out))
@@ -325,6 +338,27 @@ def test_tagged_reading_reads_each_instruction_once_and_hands_on_to_grounding():
     out = hook(eps[0], misread("Go to the sofa, then the fridge.", "suits you"))
     assert tagger.calls == 1 and seen == [["sofa", "fridge"]] and [s.target.head for s in out] == ["sofa"]
     assert hook.dropped == {"e0": ("suits you", "fridge")} and hook.added == {}
+
+
+def test_when_nothing_read_survives_grounding_the_taggers_likeliest_goals_are_read():
+    from ragnav_jax.evaluation.grounding import TaggedReading
+    from ragnav_jax.language.episodes import Episode
+
+    text = "Quick check for the team: can the robot get itself to the kettle? Thanks!"
+    ep = Episode("e0", "s", text, ("a",))
+
+    class Then:  # a grounder that drops every goal but a kettle
+        dropped: dict = {}
+
+        def __call__(self, ep, sgs):
+            return tuple(s for s in sgs if s.target.head == "kettle")
+
+    tagger = FakeTagger({"kettle": BT}, p=0.7)  # likelier a goal than not, not sure
+    misread_goal = "robot get itself to the kettle"  # the parse holds the goal's word, so nothing is added to it
+    remark = (Subgoal(0, Target(misread_goal, misread_goal), text=misread_goal),)
+    for clauses, want in ((True, ["kettle"]), (False, [])):
+        hook = TaggedReading(tagger, [ep], 0.9, then=Then(), clauses=clauses)
+        assert [s.target.head for s in hook(ep, remark)] == want
 
 
 def test_the_tagger_reads_alone_what_the_parser_cannot():

@@ -10,7 +10,7 @@ labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never the held-out `unseen`, `unseen_q`, `unseen_r`, `unseen_s` or `unseen_t`),
+the parser rounds were developed against; never the held-out `unseen` or `unseen_q` to `unseen_u`),
 labelled from the generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
@@ -41,9 +41,10 @@ O, BT, IT, BA, IA = range(len(TAGS))
 TAGGER_FORMAT = "ragnav-tagger/1"
 MAX_TOKENS = 128
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\n+|\S")
+ADD_CONF = 0.5  # a tagged phrase the parse missed is added when its every word is likelier a goal's than not
 LINE_BREAK = "|"  # the word a line break is read as: lists and headings are laid out in lines
 # the template sets a tagger may learn from: the seen templates and the development sets, never the held-out
-# `unseen` (P), `unseen_q` (Q), `unseen_r` (R), `unseen_s` (S) or `unseen_t` (T)
+# `unseen` (P), `unseen_q` (Q), `unseen_r` (R), `unseen_s` (S), `unseen_t` (T) or `unseen_u` (U)
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                 "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
 
@@ -520,12 +521,12 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     probs: (n_words, len(TAGS)) of `words(instruction)`. Words are compared by `_stem`. A parsed subgoal
     is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
-    as a goal), unless its head is one of the `known` names (what the house's memory calls its objects: the
-    memory is evidence the tagger does not have), and when every occurrence is an anchor's (B-A or I-A) above
+    as a goal), unless its head is one of the `known` names or a name's last word (what the house's memory
+    calls its objects, "light" of "work light": the memory is evidence the tagger does not have), and when every occurrence is an anchor's (B-A or I-A) above
     `conf`, known or not (an anchor read as a goal of its own: "the bureau, right next door to the magazine
     rack"), or some are and the rest are O ("a stride or two from the switched-off hi-fi speaker": an anchor's
-    clause). A tagged goal phrase that no kept subgoal shares a head word with, every word of it tagged above
-    `conf`, is added as a bare target (attributes and head split as the parser splits a noun phrase) at its
+    clause). A tagged goal phrase that no kept subgoal shares a head word with, every word of it likelier a
+    goal's than not (`ADD_CONF`), is added as a bare target (attributes and head split as the parser splits a noun phrase) at its
     place in the instruction (two goals read as one), unless its words are all words some kept subgoal
     accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal).
 
@@ -544,15 +545,16 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     tags = probs.argmax(-1) if len(probs) else np.zeros(0, int)
     goals = spans(tags, BT)
     held = [set(stems[i:j]) for i, j in goals]
-    sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > conf for i, j in goals]
+    sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > ADD_CONF for i, j in goals]
     kept, where, ends, dropped, added, taken = [], [], [], [], [], set()
+    named = set(known) | {n.split()[-1] for n in known}  # a name the memory recorded, or its last word ("light")
     for sg in subgoals:
         head = {_stem(w) for w in sg.target.head.split()}
         ks = [k for k in range(len(goals)) if head & held[k]]
         if not ks:
             occ = [n for n, w in enumerate(stems) if w in head]
             anchor = [probs[n, BA] + probs[n, IA] > conf for n in occ]
-            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in known or all(anchor)
+            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in named or all(anchor)
                         or any(anchor) and all(probs[n, O] + probs[n, BA] + probs[n, IA] > conf for n in occ)):
                 dropped.append(sg.target.phrase)
                 continue
