@@ -252,15 +252,12 @@ class MemoryGrounder:
         return kept
 
 
-LIKELIEST = 0.5  # a tagged phrase is a goal when it is more likely one than not
-
-
 class TaggedReading:
     """The parse reconciled with the instruction tagger (`language/tagger.py: reconcile`), then handed to
     `then` (the memory grounder) if any: a `ground` hook of goal_items / prepare_batch. The tagger reads
     every instruction once, batched, when the hook is made; it also reads, alone, the instructions the parser
-    cannot (`read_unparsed`), and, with `clauses`, those of which nothing read survives grounding (at
-    `LIKELIEST`: every instruction names a goal). `dropped[episode id]` keeps the phrases the tagger and the
+    cannot (`read_unparsed`), and, with `clauses`, those of which nothing read survives grounding (every
+    instruction names a goal). `dropped[episode id]` keeps the phrases the tagger and the
     grounder dropped; `added[episode id]` the goal phrases the tagger added."""
 
     def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False):
@@ -280,10 +277,10 @@ class TaggedReading:
         if added:
             self.added[ep.id] = added
         out = self.then(ep, subgoals) if self.then is not None else subgoals
-        if not out and self.clauses:  # nothing read survives: every instruction names a goal, so the tagger's
-            # likeliest goal phrases, each from its own clause ("can the robot get itself to the appliance whose
-            # temperature reading reads 90 or anything above it?")
-            alone, _, added = reconcile(ep.instruction, (), self.probs[ep.instruction], LIKELIEST, True, known,
+        if not out and subgoals and self.clauses:  # nothing read survives: every instruction names a goal, so the goal
+            # phrases the tagger reads alone, each from its own clause ("can the robot get itself to the appliance
+            # whose temperature reading reads 90 or anything above it?")
+            alone, _, added = reconcile(ep.instruction, (), self.probs[ep.instruction], self.conf, True, known,
                                         described)
             out = self.then(ep, alone) if self.then is not None else alone
             if out:
@@ -291,8 +288,9 @@ class TaggedReading:
         return out
 
     def read_unparsed(self, ep):
-        """The subgoals of an instruction the rule parser cannot read: the goal phrases the tagger is sure of,
-        each read from its own clause with `clauses` (then grounded); None where there are none."""
+        """The subgoals of an instruction the rule parser cannot read: the goal phrases the tagger finds likelier
+        goals than not (`tagger.ADD_CONF`), each read from its own clause with `clauses` (then grounded); None
+        where there are none."""
         return self(ep, ()) or None
 
     @property

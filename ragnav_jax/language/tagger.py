@@ -522,13 +522,14 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     is the tagger's when a tagged goal phrase shares a word with its head; one no phrase shares a word with
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
     as a goal), unless its head is one of the `known` names or a name's last word (what the house's memory
-    calls its objects, "light" of "work light": the memory is evidence the tagger does not have), and when every occurrence is an anchor's (B-A or I-A) above
-    `conf`, known or not (an anchor read as a goal of its own: "the bureau, right next door to the magazine
-    rack"), or some are and the rest are O ("a stride or two from the switched-off hi-fi speaker": an anchor's
-    clause). A tagged goal phrase that no kept subgoal shares a head word with, every word of it likelier a
-    goal's than not (`ADD_CONF`), is added as a bare target (attributes and head split as the parser splits a noun phrase) at its
-    place in the instruction (two goals read as one), unless its words are all words some kept subgoal
-    accounts for (an anchor, an attribute, a room: "the sunroom's lily" is one goal).
+    calls its objects, "light" of "work light": the memory is evidence the tagger does not have), and when
+    every occurrence is an anchor's (B-A or I-A) above `conf`, known or not (an anchor read as a goal of its
+    own: "the bureau, right next door to the magazine rack"), or some are and the rest are O ("a stride or two
+    from the switched-off hi-fi speaker": an anchor's clause). A tagged goal phrase that no kept subgoal
+    shares a head word with, every word of it likelier a goal's than not (`ADD_CONF`), is added as a bare
+    target (attributes and head split as the parser splits a noun phrase) at its place in the instruction (two
+    goals read as one), unless its words are all words some kept subgoal accounts for (an anchor, an
+    attribute, a room: "the sunroom's lily" is one goal).
 
     With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
     back to the bare target; a goal read without a coordinate hint takes the two numbers its clause (from its
