@@ -1,4 +1,4 @@
-"""Checks shared by the tests of template sets M, N, O and P: each takes the set's own functions and its own words
+"""Checks shared by the tests of template sets M to U: each takes the set's own functions and its own words
 (relation words, comparator readers, order cues), so the readers stay independent of the templates they check."""
 
 from __future__ import annotations
@@ -84,3 +84,34 @@ def check_order(render_goal, render_instruction, sgs, seed: int, strict: bool, s
     for sg in sgs:
         at = low.find(sg.target.head, at)
         assert at >= 0, (sg.target.head, low)
+
+
+_ONES = {w: i for i, w in enumerate(("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+                                     "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
+                                     "seventeen", "eighteen", "nineteen"))}
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+
+
+def spoken_numbers(toks: list[str]) -> list[float]:
+    """Every number among a text's tokens (digit runs and lower-case words): '-18', '.6', 'minus eighteen',
+    'three hundred and five'. Each set's test normalises its own formats into such tokens first."""
+    out: list[float] = []
+    neg, cur = False, None
+    for tok in toks + ["."]:
+        parts = tok.split("-")
+        if tok == "minus":
+            neg = True
+        elif all(p in _ONES or p in _TENS for p in parts):
+            cur = (cur or 0) + sum(_ONES.get(p, 0) + _TENS.get(p, 0) for p in parts)
+        elif tok == "hundred" and cur is not None:
+            cur *= 100
+        elif tok == "and" and cur is not None and cur % 100 == 0:
+            pass
+        else:
+            if cur is not None:
+                out.append(-cur if neg else float(cur))
+                neg, cur = False, None
+            if re.fullmatch(r"-?\d*\.?\d+", tok):
+                out.append(-float(tok) if neg else float(tok))
+                neg = False
+    return out

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from template_checks import check_coordinates, check_goal_layout, check_order
+from template_checks import check_coordinates, check_goal_layout, check_order, spoken_numbers
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, _has, constraints, subgoals
 
 from ragnav_jax.language import phrasings_t as T
@@ -231,36 +231,13 @@ def test_attributes_states_and_rooms_take_every_form():
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases, read back by a reader of our own
 
-_ONES = {w: i for i, w in enumerate(("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
-                                     "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
-                                     "seventeen", "eighteen", "nineteen"))}
-_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
 
 
 def numbers_in(text: str) -> list[float]:
     """Every number in the text: '-18', '−18', '.6', '0.60', 'minus 18', 'minus eighteen', 'three hundred and
     five'."""
     toks = re.findall(r"-?\d*\.?\d+|[a-z]+(?:-[a-z]+)*", text.lower().replace("\u2212", "-"))
-    out: list[float] = []
-    neg, cur = False, None
-    for tok in toks + ["."]:
-        parts = tok.split("-")
-        if tok == "minus":
-            neg = True
-        elif all(p in _ONES or p in _TENS for p in parts):
-            cur = (cur or 0) + sum(_ONES.get(p, 0) + _TENS.get(p, 0) for p in parts)
-        elif tok == "hundred" and cur is not None:
-            cur *= 100
-        elif tok == "and" and cur is not None and cur % 100 == 0:
-            pass
-        else:
-            if cur is not None:
-                out.append(-cur if neg else float(cur))
-                neg, cur = False, None
-            if re.fullmatch(r"-?\d*\.?\d+", tok):
-                out.append(-float(tok) if neg else float(tok))
-                neg = False
-    return out
+    return spoken_numbers(toks)
 
 
 def comparator_of(text: str) -> str:

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from template_checks import check_coordinates, check_goal_layout, check_order
+from template_checks import check_coordinates, check_goal_layout, check_order, spoken_numbers
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, _has, constraints, subgoals
 
 from ragnav_jax.language import phrasings_u as U
@@ -247,10 +247,6 @@ def test_every_relation_word_is_used_and_read():
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases, read back by a reader of our own
 
-_ONES = {w: i for i, w in enumerate(("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
-                                     "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
-                                     "seventeen", "eighteen", "nineteen"))}
-_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
 
 
 def numbers_in(text: str) -> list[float]:
@@ -259,26 +255,7 @@ def numbers_in(text: str) -> list[float]:
     t = text.lower().replace("½", ".5")
     t = re.sub(r"(\d+(?:\.\d+)?)((?:°c| °c| degrees celsius| degrees| degs c)) below zero", r"-\1\2", t)
     toks = re.findall(r"-?\d*\.?\d+|[a-z]+(?:-[a-z]+)*", t)
-    out: list[float] = []
-    neg, cur = False, None
-    for tok in toks + ["."]:
-        parts = tok.split("-")
-        if tok == "minus":
-            neg = True
-        elif all(p in _ONES or p in _TENS for p in parts):
-            cur = (cur or 0) + sum(_ONES.get(p, 0) + _TENS.get(p, 0) for p in parts)
-        elif tok == "hundred" and cur is not None:
-            cur *= 100
-        elif tok == "and" and cur is not None and cur % 100 == 0:
-            pass
-        else:
-            if cur is not None:
-                out.append(-cur if neg else float(cur))
-                neg, cur = False, None
-            if re.fullmatch(r"-?\d*\.?\d+", tok):
-                out.append(-float(tok) if neg else float(tok))
-                neg = False
-    return out
+    return spoken_numbers(toks)
 
 
 def comparator_of(text: str) -> str:
