@@ -43,19 +43,23 @@ def check_goal_layout(text: str, sg: Subgoal, rel_words: dict, endings: tuple[st
     assert text.count("(") == text.count(")"), text
 
 
-def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str, unit_pct: str = r"%|percent") -> None:
-    """The phrase names the constraint it says it wrote: the number, the comparator (read by `comparator`), the unit
-    (regexes `unit_c`, `unit_pct`); a superlative names no number and says low (regex `low`) exactly when it is a
-    minimum."""
+def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str, unit_pct: str = r"%|percent",
+                 numbers=None, reading=None) -> None:
+    """The phrase names the constraint it says it wrote: the reading (read by `reading`, when given), the number
+    (read by `numbers`; default `read_numbers`), the comparator (read by `comparator`), the unit (regexes `unit_c`,
+    `unit_pct`); a superlative names no number and says low (regex `low`) exactly when it is a minimum."""
     prefix, tail, written = rendered
     text = (prefix + " " + tail).strip()
     assert bool(prefix) != bool(tail) and (written.reading, written.comparator) == (c.reading, c.comparator)
+    if reading is not None:
+        assert reading(text) == c.reading, text
     if c.is_superlative:
-        assert written.value is None and read_numbers(text) == [], text
+        assert written.value is None and (numbers or read_numbers)(text) == [], text
         assert bool(re.search(low, text)) == (c.comparator == "min"), text
         return
     assert written.value == pytest.approx(c.value, abs=0.006)
-    assert read_numbers(text.replace("°C", " C")) == [pytest.approx(written.value)], text
+    got = numbers(text) if numbers is not None else read_numbers(text.replace("°C", " C"))
+    assert got == [pytest.approx(written.value)], text
     assert comparator(text) == c.comparator, text
     unit = "c" if re.search(unit_c, text.lower()) else "%" if re.search(unit_pct, text) else ""
     assert unit == written.unit, text
