@@ -804,7 +804,8 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_dev11": ("phrasings_dev11", "dev11"), "unseen_dev12": ("phrasings_dev12", "dev12"),
                     "unseen_q": ("phrasings_q", "q"), "unseen_r": ("phrasings_r", "r"),
                     "unseen_s": ("phrasings_s", "s"), "unseen_t": ("phrasings_t", "t"),
-                    "unseen_u": ("phrasings_u", "u"), "unseen": ("phrasings_heldout", "heldout")}
+                    "unseen_u": ("phrasings_u", "u"), "unseen_v": ("phrasings_v", "v"),
+                    "unseen": ("phrasings_heldout", "heldout")}
 
 
 def _renderer(split: str, what: str):
