@@ -553,12 +553,12 @@ class EvalConfig:
     # or coordinate hint (0 = none; evaluation/search.py)
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
     # goals naming nothing it knows dropped (evaluation/grounding.py)
-    tagger: bool = False  # the parse is reconciled with the instruction tagger before grounding: remarks it is sure
+    tagger: bool = True  # the parse is reconciled with the instruction tagger before grounding: remarks it is sure
     # name no goal dropped, goal phrases it is sure of and the parse missed added (language/tagger.py)
     tagger_file: str = ""  # tagger.npz (`ragnav fit-tagger`; "" = ragnav_jax/data/tagger.npz)
     tagger_conf: float = 0.0  # probability above which the tagger's reading overrides the parse (0 = the value
     # fitted with the tagger on seen-split houses, `ragnav fit-tagger`)
-    tagger_clauses: bool = False  # a goal the tagger adds is what the rule parser reads in its own clause (its
+    tagger_clauses: bool = True  # a goal the tagger adds is what the rule parser reads in its own clause (its
     # attributes, room, relations, sensors), not the bare tagged phrase (language/tagger.py: reconcile)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said

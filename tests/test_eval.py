@@ -114,7 +114,7 @@ def test_a_remark_read_as_a_goal_is_dropped_before_it_costs_the_episode(setup, a
                  modality="text", goals=("sofa_1", "fridge_1"), order="strict")
     rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "ragnav", executor=ex)
     assert rows[0]["success"] and rows[0]["ungrounded"] == ["no rush"] and len(rows[0]["subgoal_status"]) == 2
-    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, ground=False))
+    off = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, ground=False, tagger=False))  # the parse as read
     rows2, _ = evaluate_navigation(bank, [apartment], [ep], emb, off, "ragnav", executor=ex)
     r = rows2[0]
     assert r["ungrounded"] == [] and len(r["subgoal_status"]) == 3 and r["subgoal_status"][0] != "found"
@@ -155,8 +155,10 @@ def test_the_loop_reads_the_order_from_the_instruction_not_the_episode(setup, ap
 
 def test_the_oracle_does_not_depend_on_the_parse(setup, apartment):
     """The Oracle reads no instruction: an instruction the parser cannot read (or reads with fewer goals)
-    fails every other method's goals as `failed:parse`, never the Oracle's."""
+    fails every other method's goals as `failed:parse` when nothing else reads it (the instruction tagger
+    off: it would read the two names), never the Oracle's."""
     cfg, bank, streams, emb, ex = setup
+    cfg = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, tagger=False))
     ep = Episode(id="unread", scene=apartment.name, instruction="Visit either the kettle or the toaster.",
                  modality="text", goals=("fridge_1", "bed_1"), order="strict")
     rows, _ = evaluate_navigation(bank, [apartment], [ep], emb, cfg, "oracle", executor=ex)

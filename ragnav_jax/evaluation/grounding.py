@@ -290,8 +290,10 @@ class TaggedReading:
     def read_unparsed(self, ep):
         """The subgoals of an instruction the rule parser cannot read: the goal phrases the tagger finds likelier
         goals than not (`tagger.ADD_CONF`), each read from its own clause with `clauses` (then grounded); None
-        where there are none."""
-        return self(ep, ()) or None
+        where there are none, and for no instruction at all (`parser.input_problem`: blank, too long)."""
+        from ragnav_jax.language.parser import input_problem
+
+        return None if input_problem(ep.instruction) else self(ep, ()) or None
 
     @property
     def dropped(self) -> dict:

@@ -1532,11 +1532,22 @@ _SIGN_OFF = re.compile(r"(?:(?:\r?\n|\r)|(?<=[.!?])[ \t]+)\s*(?:(?:kind|best|war
                        re.IGNORECASE)
 
 
-def _normalise(text) -> str:
+def input_problem(text) -> str | None:
+    """Why `text` is no instruction at all, whatever reads it (not text, blank, longer than MAX_CHARS), or None.
+    The instruction tagger reads what the parser cannot, but not this."""
     if not isinstance(text, str):
-        raise ParseError(f"an instruction must be text, got {type(text).__name__}")
+        return f"an instruction must be text, got {type(text).__name__}"
     if len(text) > MAX_CHARS:
-        raise ParseError(f"the instruction is too long ({len(text)} characters; at most {MAX_CHARS})")
+        return f"the instruction is too long ({len(text)} characters; at most {MAX_CHARS})"
+    if not text.strip():
+        return "the instruction is empty: say where to go, e.g. 'go to the sofa, then the fridge'"
+    return None
+
+
+def _normalise(text) -> str:
+    problem = input_problem(text)
+    if problem is not None:
+        raise ParseError(problem)
     # Degree look-alikes that NFKC would turn into letters: masculine ordinal "º", ring above "˚".
     t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})

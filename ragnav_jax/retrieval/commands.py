@@ -13,14 +13,17 @@ from ragnav_jax.io import write_json, write_jsonl
 def check_unparsed(episodes, allow: bool, source, tagger: bool = False) -> dict:
     """summary.json's "unparsed" entry: the episodes whose instruction the parser cannot read, named on stderr
     (one line) and refused with a UserError naming --allow-unparsed unless `allow` (they score as misses) or
-    `tagger` (the instruction tagger reads them alone, `eval.tagger`)."""
+    `tagger` (the instruction tagger reads them alone, `eval.tagger`; it is still refused, unless `allow`,
+    where some are no instruction at all: blank or too long, `parser.input_problem`)."""
+    from ragnav_jax.language.parser import input_problem
     from ragnav_jax.retrieval.evaluate import unparsed
 
     ids = unparsed(episodes)
     if ids:
         shown = ", ".join(ids[:5]) + (f", ... ({len(ids) - 5} more)" if len(ids) > 5 else "")
         what = f"{source}: {len(ids)} of {len(episodes)} episodes have instructions the parser cannot read ({shown})"
-        if tagger:
+        by_id = {ep.id: ep for ep in episodes}
+        if tagger and not any(input_problem(by_id[i].instruction) for i in ids):
             print(f"ragnav: note: {what}; the instruction tagger reads them alone (eval.tagger)", file=sys.stderr)
         elif not allow:
             raise UserError(f"{what}; pass --allow-unparsed to score them as misses")
