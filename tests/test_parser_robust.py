@@ -676,3 +676,28 @@ def test_each_number_followed_by_its_axis(text, xy):
 
 def test_stood_before_a_relation_is_no_part_of_the_name():
     assert _anchors("the samovar stood by the hatstand") == [("samovar", [("by", "hatstand", (), [])])]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.from_regex(r"[bdfglmnprstvz][aeiou][bdfglmnprstvz]{1,2}", fullmatch=True), st.sampled_from(["ed", "ing"]),
+       st.sampled_from(["next to", "beside", "by", "near", "under"]))
+def test_a_participle_no_lexicon_knows_leads_a_relation(stem, suffix, rel):
+    """'the sofa snuggled next to the lamp', 'the sofa hovering by the lamp': a participle between a noun and its
+    relation is a relative-clause word like 'sitting', whatever the verb."""
+    verb = stem + suffix
+    assume(verb not in L.CLOSED_CLASS and not any(verb in p.split() for p in (*L.STATE_PHRASES, *L.RELATION_PHRASES)))
+    sgs = parse_instruction(f"Go to the sofa {verb} {rel} the lamp, then the fridge.").subgoals
+    assert [s.target.head for s in sgs] == ["sofa", "fridge"]
+    assert [r.anchor.head for r in sgs[0].target.relations] == ["lamp"]
+
+
+@pytest.mark.parametrize("text,head,state", [
+    ("Go to the daybed beside the easel.", "daybed", None),  # a name that ends like a participle
+    ("Go to the olive daybed beside the easel.", "daybed", None),
+    ("Go to the painting above the fireplace.", "painting", None),
+    ("Go to the lamp switched on next to the sofa.", "lamp", "switched on"),  # a state, not a clause word
+])
+def test_names_and_states_that_end_like_participles_stay_what_they_are(text, head, state):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == head and len(sg.target.relations) == 1
+    assert (state in sg.target.attributes) if state else True

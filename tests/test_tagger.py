@@ -252,6 +252,91 @@ def test_a_goal_takes_the_descriptors_its_clause_says_of_it(text, tagged, want):
         assert all(x in s.target.phrase for x in a)
 
 
+def test_descriptors_follow_the_head_where_the_tagger_cut_the_goal_phrase_short():
+    """'the recycling/B-T bin/I-A (distinguishing features: cream)': the goal's clause starts after its head's
+    last word, not after the tagged span."""
+    text = "Cast on at the recycling bin (distinguishing features: cream). Then the lamp."
+    sgs = parse_instruction("Go to the recycling bin, then the lamp.").subgoals
+    p = probs_for(text, {"recycling": BT, "bin": IA, "lamp": BT})
+    out, _, _ = reconcile(text, sgs, p, clauses=True, descriptors={"cream"})
+    assert [s.target.attributes for s in out] == [("cream",), ()]
+
+
+def test_a_dropped_goal_of_describing_words_gives_them_and_its_room_to_the_goal_before():
+    """'the magazine rack, lacquered by the look of it, in the library' read as a goal 'lacquered' in the
+    library that the tagger is sure names nothing: its word and room are the rack's."""
+    from ragnav_jax.language.types import Subgoal, Target
+
+    text = "Have a look at the magazine rack, lacquered by the look of it, in the library; and the lamp."
+    rack, lamp = parse_instruction("Go to the magazine rack, then the lamp.").subgoals
+    lacquered = Subgoal(1, Target("lacquered", "lacquered"), room="library", text="lacquered ... in the library")
+    p = probs_for(text, {"magazine": BT, "rack": IT, "lamp": BT})
+    out, dropped, _ = reconcile(text, (rack, lacquered, lamp), p, clauses=True, descriptors={"lacquered"})
+    assert [(s.target.head, s.target.attributes, s.room) for s in out] == [
+        ("magazine rack", ("lacquered",), "library"), ("lamp", (), None)]
+    assert dropped == ("lacquered",)
+    assert [s.target.head for s in reconcile(text, (rack, lacquered, lamp), p, clauses=True)[0]] == [
+        "magazine rack", "lamp"]  # words no caption says: dropped as before, nothing given
+
+
+def test_a_goal_the_parse_made_an_anchor_of_is_a_goal_where_the_tagger_is_sure():
+    """'... then the fruit bowl with the fish tank' (a last goal after 'with', as in "bring it home with the fish
+    tank"): the parse reads 'with the fish tank' as the bowl's relation; the tagger is sure it is a goal: the
+    relation goes and the goal is added. Where the goal holding the anchor is no goal the tagger found ('coins
+    stashed at the harp'), grounding reads the anchor as the goal, and nothing changes here."""
+    text = "Go to the sofa, then the fruit bowl with the fish tank."
+    sgs = parse_instruction(text).subgoals
+    assert [s.target.head for s in sgs] == ["sofa", "fruit bowl"] and sgs[1].target.relations
+    p = probs_for(text, {"sofa": BT, "fruit": BT, "bowl": IT, "fish": BT, "tank": IT})
+    out, _, added = reconcile(text, sgs, p, clauses=True)
+    assert [(s.target.head, s.target.relations) for s in out] == [("sofa", ()), ("fruit bowl", ()), ("fish tank", ())]
+    assert added == ("fish tank",)
+    unsure = probs_for(text, {"sofa": BT, "fruit": BT, "bowl": IT, "fish": BT, "tank": IT}, p=0.7)
+    assert reconcile(text, sgs, unsure, conf=0.8, clauses=True)[0] == sgs  # sure of it, but not above conf
+    remark = probs_for(text, {"sofa": BT, "fish": BT, "tank": IT})  # the bowl is no goal of the tagger's, and
+    ws = [w.lower() for w in words(text)]                                # it is unsure what the bowl is
+    remark[[ws.index("fruit"), ws.index("bowl")]] = 1 / len(TAGS)
+    assert reconcile(text, sgs, remark, clauses=True)[0] == sgs
+
+
+@pytest.mark.parametrize("clause,want", [
+    ("the spider plant (the NDVI meter puts it at 0.60 or under)", ("ndvi", "le", 0.6)),
+    ("the appliance (temperature-wise: already past 0 degrees Celsius), in the pantry", ("temperature_c", "gt", 0.0)),
+    ("the monstera whose NDVI comes in at .7 or thereabouts", ("ndvi", "approx", 0.7)),
+    ("the kiln (the thermometer puts it at 824 degrees)", ("temperature_c", "approx", 824.0)),
+    ("the lamp whose temperature has dropped under forty degrees", ("temperature_c", "lt", 40.0)),
+    ("the freezer, minus eighteen °C or so", ("temperature_c", "approx", -18.0)),
+    ("the plant (NDVI-wise: 0.3 tops)", ("ndvi", "approx", 0.3)),  # "tops 40" is over 40; "0.3 tops" no comparator the lexicon knows
+])
+def test_a_reading_the_parser_missed_is_read_from_its_clause(clause, want):
+    from ragnav_jax.language.tagger import loose_reading
+
+    got = loose_reading(clause)
+    assert (got.reading, got.comparator, got.value) == want
+
+
+@pytest.mark.parametrize("clause,used", [
+    ("the toolbox at x 3, y 4", ()),  # no reading, no unit
+    ("the plant, NDVI 0.4 or 0.5", ()),  # two numbers
+    ("the lamp at 12.5, 3 with its temperature", (12.5, 3.0)),  # only coordinates
+    ("the lamp, 5 of them", ()),  # a number, no reading
+])
+def test_no_reading_where_the_clause_gives_no_one_number_with_a_reading(clause, used):
+    from ragnav_jax.language.tagger import loose_reading
+
+    assert loose_reading(clause, used) is None
+
+
+def test_a_goal_without_a_reading_takes_the_one_its_clause_says():
+    from ragnav_jax.language.types import SensorConstraint
+
+    text = "Pose 1: the plant (the NDVI meter puts it at 0.60 or under). Pose 2: the lamp at 3.5 / 2.0."
+    sgs = parse_instruction("Go to the plant, then the lamp.").subgoals
+    out, _, _ = reconcile(text, sgs, probs_for(text, {"plant": BT, "lamp": BT}), clauses=True)
+    assert [s.sensors for s in out] == [(SensorConstraint("ndvi", "le", 0.6),), ()]
+    assert out[1].location is not None
+
+
 def test_caption_descriptors_are_the_words_before_a_name_and_the_state_after_that_is():
     from ragnav_jax.evaluation.grounding import caption_descriptors
 

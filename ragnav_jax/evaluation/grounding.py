@@ -28,11 +28,14 @@ against the memory of the house:
   the hashing embedder, for which a plural is as far from a name as a remark is); with a room, relations,
   readings or a coordinate hint it need only pass the name check (`tau_head`). Such a head is first repaired
   to its first words when they ground ("freezer flush" from "the freezer flush next to ..."), never to its
-  last ("unit" of "Household Services Unit"). The price: a goal the memory never recorded under any near name
+  last ("unit" of "Household Services Unit"). A goal measured by a sensor keeps such a head: a word the house
+  never uses for what it names ("the appliance in the pantry at about 21 °C"), which the verifier checks by
+  the names that fit it best. The price: a goal the memory never recorded under any near name
   is dropped too (an object the exploration missed, or one added since); `tau_bare=0` in a fitted file turns
   the rule off (tests/test_eval.py does so for a synthetic memory that never saw the sofa);
 - a goal that is only words the memory describes things with and names nothing by ("the amp, retro" read
-  as a goal "retro") gives them to the goal before it as attributes; one that is only a room name the
+  as a goal "retro") gives them to the goal before it as attributes, and its room if that goal has none
+  ("the bean bag, turquoise by the look of it, in the games room"); one that is only a room name the
   memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it to the goal
   before it as its room;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
@@ -60,6 +63,7 @@ MAX_SPAN = 4  # longest run of words tried as a head
 NAME_LINKS = frozenset({"of", "and"})
 _WORD = re.compile(r"[a-z0-9]+(?:[-'][a-z0-9]+)*")
 _NUMBER = re.compile(r"^\d+(?:[.,]\d+)?$")
+_NUMBER_IN = re.compile(r"\d")
 
 
 def _closed(word: str) -> bool:
@@ -115,6 +119,25 @@ def _best(verifier, pieces: Sequence[str], vocab: Sequence[str]) -> tuple[str | 
     return pieces[i], float(fit[i])
 
 
+def ground_relations(verifier, rels: Sequence, vocab: Sequence[str]) -> tuple:
+    """Relations whose anchors name something: an anchor head with a number in it is a coordinate read as an
+    object ("at easting 4.5, northing 0.4") and goes; one with a closed-class word is a misreading ("by the look
+    of it", "within arm's length of the easel") and is repaired to its run of content words that fits a recorded
+    name best (`tau_ground`, as heads are), or goes."""
+    out = []
+    for r in rels:
+        a = r.anchor
+        if _NUMBER_IN.search(a.head):
+            continue
+        if _closed_in(a.head):
+            best, score = _best(verifier, candidate_heads(a.phrase), vocab)
+            if score < verifier.p.tau_ground:
+                continue
+            r = dataclasses.replace(r, anchor=dataclasses.replace(a, head=best, phrase=best))
+        out.append(r)
+    return tuple(out)
+
+
 def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | None = None) -> Subgoal | None:
     """The subgoal with its head repaired against the memory's names (module docstring), or None when
     nothing in it names anything the memory knows. vocab: every name the memory recorded (lower case);
@@ -156,13 +179,24 @@ def ground_subgoal(verifier, sg: Subgoal, vocab: Sequence[str], captions: str | 
                 g = ground_subgoal(verifier, dataclasses.replace(sg, target=r.anchor), vocab, captions)
                 if g is not None:
                     return g
-            return None
-    room, rels = sg.room, t.relations
+            if misread or not sg.sensors:
+                return None
+            # a goal measured by a sensor keeps a head of content words no recorded name reaches, a word the house
+            # never uses for what it names ("the appliance in the pantry at about 21 °C"): the verifier checks it
+            # by the names that fit it best (`Verifier.verdicts`)
+    rels, room = ground_relations(verifier, t.relations, vocab), sg.room
     inside = [r for r in rels if r.type == "in" and not r.anchor.relations and not r.anchor.attributes]
     if room is None and inside and float(name_fit(verifier, [inside[0].anchor.head], vocab)[0]) < p.tau_head:
-        # "in the bakehouse": inside something the memory never named is a room whose name the parser lacks
-        room, rels = inside[0].anchor.phrase, tuple(r for r in rels if r is not inside[0])
-    if head == t.head and attrs == t.attributes and room == sg.room:
+        # "in the bakehouse": inside something the memory never named is a room whose name the parser lacks; a room
+        # name and words after it are the room ("in the sunroom whose NDVI is the lowest going"), an adverb or words
+        # no name holds are none ("walk it in exactly")
+        words = inside[0].anchor.phrase.split()
+        lead = next((words[:k] for k in range(len(words), 0, -1) if is_room_phrase(words[:k]) and words[:k] != ["room"]),
+                    None)  # ("room" alone names none: "in the room occupied by the rack")
+        if lead is not None or not (_closed_in(inside[0].anchor.phrase) or words[-1].endswith("ly")):
+            room = " ".join(lead) if lead is not None else inside[0].anchor.phrase
+        rels = tuple(r for r in rels if r is not inside[0])
+    if head == t.head and attrs == t.attributes and room == sg.room and rels == t.relations:
         return sg
     pre = t.phrase[: -len(t.head)] if t.phrase.endswith(t.head) else " ".join(attrs)
     gone = {w for a in t.attributes if a not in attrs for w in a.split()}
@@ -184,13 +218,17 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
     names = {w for n in vocab for w in _WORD.findall(n)}
     for sg in subgoals:
         t = sg.target
-        if (captions is not None and not (t.relations or sg.room or sg.location or sg.sensors) and t.head not in vocab
-                and all(said(w, captions) and w not in names for w in _WORD.findall(t.head))):
-            # "the amp, retro": words the memory describes things with but names nothing by describe the goal before
-            if kept:
+        if (captions is not None and not (sg.location or sg.sensors) and t.head not in vocab
+                and all(said(w, captions) and w not in names for w in _WORD.findall(t.head))
+                and not ground_relations(verifier, t.relations, vocab)):
+            # "the amp, retro": words the memory describes things with but names nothing by describe the goal
+            # before, and so does the room said with them ("the bean bag, turquoise by the look of it, in the
+            # games room") unless that goal has another
+            if kept and (sg.room is None or kept[-1].room in (None, sg.room)):
                 prev = kept[-1].target
                 attrs = prev.attributes + tuple(a for a in (*t.attributes, t.head) if a not in prev.attributes)
-                kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(prev, attributes=attrs))
+                kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(prev, attributes=attrs),
+                                               room=kept[-1].room or sg.room)
             else:
                 dropped.append(t.phrase)
             continue

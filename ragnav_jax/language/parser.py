@@ -1170,10 +1170,31 @@ def _relation_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     return None
 
 
+# A participle the lexicon does not know, standing between a noun and its relation ("the shelf unit snuggled next
+# to the drums", "the lamp hovering by the sofa"): a relative-clause word like "sitting" or "placed", unless it
+# begins a state ("switched on"), is a word the lexicon gives another role, or follows no noun (a name ending
+# like a participle: "the daybed beside the easel", "the olive daybed", "the painting above the fire").
+_PARTICIPLE = re.compile(r"[a-z]{3,}(?:ed|ing)")
+_NO_LEADER = frozenset(w for p in L.STATE_PHRASES for w in p.split()) | frozenset(p.split()[0] for p in L.RELATION_PHRASES)
+
+
+def _leader(tokens: list[str], j: int) -> bool:
+    """tokens[j] may stand between a noun and its relation (`lexicon.RELATIVE_LEADERS`, or an unknown participle
+    after a noun)."""
+    tok = tokens[j]
+    if tok in L.RELATIVE_LEADERS:
+        return True
+    if _PARTICIPLE.fullmatch(tok) is None or tok in _NO_LEADER or tok in L.CLOSED_CLASS or j == 0:
+        return False
+    prev = tokens[j - 1]
+    return (prev.isalpha() and prev not in L.CLOSED_CLASS and not L.is_modifier(prev)
+            and _PARTICIPLE.fullmatch(prev) is None)
+
+
 def _boundary_at(tokens: list[str], i: int) -> tuple[str, int, bool] | None:
     """A relation starting at i, possibly after relative-clause words: (type, tokens used, is_room_prep)."""
     j = i
-    while j < len(tokens) and tokens[j] in L.RELATIVE_LEADERS and j - i < 4:
+    while j < len(tokens) and _leader(tokens, j) and j - i < 4:
         r = _relation_at(tokens, j)
         if r is not None:
             break

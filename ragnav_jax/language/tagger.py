@@ -451,12 +451,19 @@ def _stem(word: str) -> str:
     return _singular(w) if len(w) > 3 else w
 
 
-def _structure(t) -> set[str]:
-    """Every word a parsed target accounts for: head, attributes and its anchors', recursively."""
+def _structure(t, anchors: bool = True) -> set[str]:
+    """Every word a parsed target accounts for: head, attributes and (with `anchors`) its anchors', recursively."""
     out = {_stem(w) for x in (t.head, *t.attributes) for w in x.split()}
-    for r in t.relations:
+    for r in t.relations if anchors else ():
         out |= _structure(r.anchor)
     return out
+
+
+def _without_anchor(t, held: set[str]):
+    """The target less every relation, at any depth, whose anchor's head words are all among `held`."""
+    rels = tuple(dataclasses.replace(r, anchor=_without_anchor(r.anchor, held)) for r in t.relations
+                 if not {_stem(w) for w in r.anchor.head.split()} <= held)
+    return t if rels == t.relations else dataclasses.replace(t, relations=rels)
 
 
 def _clause_subgoal(instruction: str, i: int, end: int | None, held: set[str]):
@@ -493,6 +500,43 @@ def loose_hint(clause: str, used: Sequence[float] = ()):
     return Location(nums[0], nums[1]) if len(nums) == 2 else None
 
 
+def _phrases_alt(phrases) -> str:
+    return "|".join(re.escape(p) for p in sorted(phrases, key=len, reverse=True))
+
+
+def loose_reading(clause: str, used: Sequence[float] = ()):
+    """A sensor constraint from a goal's clause, up to its first line break, that the parser could not read
+    ("(the NDVI meter puts it at 0.60 tops)", "temperature-wise: already past 0 degrees"): a reading the lexicon
+    names in it (`lexicon.READING_NAMES`; else the one its number's unit implies) and its one number that is no
+    coordinate (`used`), compared by the lexicon's comparator phrase nearest that number (one said before a
+    number before it, one said after a number after it), or "about" where the clause has none; None unless
+    there is exactly one such number and a reading."""
+    from ragnav_jax.language import lexicon as L
+    from ragnav_jax.language.parser import _number_words, _sensor
+    from ragnav_jax.language.types import ParseError
+
+    line = _number_words(re.sub(r"(?<![\w.])\.(\d)", r"0.\1", clause.split("\n", 1)[0].lower()))
+    nums = [m for m in _NUMBER.finditer(line) if all(abs(float(m.group()) - u) > 1e-9 for u in used)]
+    if len(nums) != 1:
+        return None
+    num = nums[0]
+    unit = _UNIT.match(line, num.end())
+    name = re.search(rf"\b(?:{_phrases_alt(L.READING_NAMES)})\b", line)
+    if name is None and unit is None:
+        return None
+    # a comparator phrase before the number ("under 40"), or one written after it ("40 or more")
+    cmps = [(num.start() - m.end(), L.COMPARATOR_PHRASES[m.group()])
+            for m in re.finditer(rf"\b(?:{_phrases_alt(L.COMPARATOR_PHRASES)})(?!\w)", line[: num.start()])]
+    cmps += [(m.start(), L.COMPARATOR_POSTFIX[m.group()])
+             for m in re.finditer(rf"\b(?:{_phrases_alt(L.COMPARATOR_POSTFIX)})(?!\w)", line[num.end():])]
+    cmp = min(cmps)[1] if cmps else "approx"
+    try:
+        return _sensor(L.READING_NAMES[name.group()] if name else None, cmp, num.group(),
+                       unit.group().strip() if unit else None, line)
+    except ParseError:
+        return None
+
+
 def clause_descriptors(ws: Sequence[str], tags: Sequence[int], lo: int, hi: int, sg,
                        descriptors: Collection[str]) -> tuple[str, ...]:
     """What a goal's clause says of it after its phrase and the parse did not read: the `descriptors` (words
@@ -525,19 +569,25 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     calls its objects, "light" of "work light": the memory is evidence the tagger does not have), and when
     every occurrence is an anchor's (B-A or I-A) above `conf`, known or not (an anchor read as a goal of its
     own: "the bureau, right next door to the magazine rack"), or some are and the rest are O ("a stride or two
-    from the switched-off hi-fi speaker": an anchor's clause). A tagged goal phrase that no kept subgoal
+    from the switched-off hi-fi speaker": an anchor's clause). A dropped goal that is only `descriptors`
+    gives them, and its room, to the goal before ("the magazine rack, lacquered by the look of it, in the
+    library"). A tagged goal phrase that no kept subgoal
     shares a head word with, every word of it likelier a goal's than not (`ADD_CONF`), is added as a bare
     target (attributes and head split as the parser splits a noun phrase) at its place in the instruction (two
     goals read as one), unless its words are all words some kept subgoal accounts for (an anchor, an
-    attribute, a room: "the sunroom's lily" is one goal).
+    attribute, a room: "the sunroom's lily" is one goal); where they are only an anchor's and the tagger is
+    sure of the phrase above `conf`, the anchor goes and the goal is added ("then the fruit bowl, and bring it
+    home with the fish tank").
 
     With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
     back to the bare target; a goal read without a coordinate hint takes the two numbers its clause (from its
-    tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); and a goal tagged in place takes
+    tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); a goal tagged in place and read
+    without a reading takes the one its clause says, if any (`loose_reading`); and a goal tagged in place takes
     the `descriptors` (what the house's captions describe things by) its clause says of it after its phrase
     and the parse missed ("the freezer (think lilac)", `clause_descriptors`). Everything else is left as
     parsed: where the two agree on the goals, nothing changes.
     """
+    from ragnav_jax.language.lexicon import CLOSED_CLASS
     from ragnav_jax.language.parser import split_noun_phrase
     from ragnav_jax.language.types import Subgoal, Target
 
@@ -558,19 +608,47 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in named or all(anchor)
                         or any(anchor) and all(probs[n, O] + probs[n, BA] + probs[n, IA] > conf for n in occ)):
                 dropped.append(sg.target.phrase)
+                if (kept and set(sg.target.head.split()) <= set(descriptors) and not (sg.sensors or sg.location)
+                        and (sg.room is None or kept[-1].room in (None, sg.room))):
+                    # words the house's captions describe things by, and the room said with them, are the goal
+                    # before's ("the magazine rack, lacquered by the look of it, in the library")
+                    t = kept[-1].target
+                    kept[-1] = dataclasses.replace(kept[-1], room=kept[-1].room or sg.room, target=dataclasses.replace(
+                        t, attributes=t.attributes + (sg.target.head,), phrase=f"{sg.target.head} {t.phrase}"))
                 continue
             where.append(occ[0] if occ else 0)
             ends.append(None)
+        elif all(k in taken for k in ks):  # its words' tagged phrase is another goal's ("riddle sheet ...", then
+            # "or the riddle won't work"): it stands where its words next occur, with no tagged phrase of its own
+            after = max(where, default=0)
+            where.append(next((n for n, w in enumerate(stems) if n > after and w in head), goals[ks[0]][0]))
+            ends.append(None)
         else:
-            k = next((k for k in ks if k not in taken), ks[0])
+            k = next(k for k in ks if k not in taken)
             taken.add(k)
-            where.append(goals[k][0])
-            ends.append(goals[k][1])
+            (i, j), last = goals[k], _stem(sg.target.head.split()[-1])
+            where.append(i)
+            # the goal's phrase ends at its head's last word where the tagger cut it short ("recycling/B-T bin/I-A")
+            ends.append(next((n + 1 for n in range(j, min(len(stems), j + 2)) if stems[n] == last), j))
         kept.append(sg)
     accounted = set().union(*(_structure(sg.target) | {_stem(w) for w in (sg.room or "").split()} for sg in kept))
+    own = set().union(*(_structure(sg.target, anchors=False) | {_stem(w) for w in (sg.room or "").split()}
+                        for sg in kept))
     for k, (i, j) in enumerate(goals):
-        if k in taken or not sure[k] or held[k] <= accounted:
+        if k in taken or not sure[k]:
             continue
+        if held[k] <= accounted:
+            if held[k] <= own or min([probs[i, BT]] + [probs[n, IT] for n in range(i + 1, j)]) <= conf:
+                continue
+            # a phrase the parse made an anchor of and the tagger is sure is a goal is one ("... then the fruit
+            # bowl, and bring it home with the fish tank"): the anchor goes, the goal is added; only where the
+            # goal holding the anchor is one the tagger found too, and no misreading ("clients arrive could you
+            # check on the tumble dryer", "coins are stashed at the harp"), which grounding replaces by its anchor
+            less = [dataclasses.replace(sg, target=_without_anchor(sg.target, held[k])) for sg in kept]
+            if less == kept or any(a != b and (e is None or set(b.target.head.split()) & CLOSED_CLASS)
+                                   for a, b, e in zip(less, kept, ends)):
+                continue
+            kept = less
         phrase = " ".join(ws[i:j])
         added.append(phrase)
         nxt = goals[k + 1][0] if k + 1 < len(goals) else None
@@ -587,11 +665,17 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         at = [m.start() for m in _WORD.finditer(instruction)] + [len(instruction)]
         starts = [min(where[n], len(at) - 1) for n in order] + [len(at) - 1]
         for pos, n in enumerate(order):
+            clause = instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]]
             if kept[n].location is None:
                 used = [c.value for c in kept[n].sensors if c.value is not None]
-                loc = loose_hint(instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]], used)
+                loc = loose_hint(clause, used)
                 if loc is not None:
                     kept[n], hinted = dataclasses.replace(kept[n], location=loc), True
+            if not kept[n].sensors and ends[n] is not None:  # and a reading the clause of a goal tagged in place says
+                loc = kept[n].location
+                reading = loose_reading(clause, (loc.x, loc.y) if loc is not None else ())
+                if reading is not None:
+                    kept[n], hinted = dataclasses.replace(kept[n], sensors=(reading,)), True
         for pos, n in enumerate(order):  # and the descriptors its clause says of it after its phrase
             if ends[n] is not None and descriptors:
                 more = clause_descriptors(ws, tags, ends[n], max(ends[n], starts[pos + 1]), kept[n], descriptors)
