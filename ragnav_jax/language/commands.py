@@ -192,7 +192,8 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--json", action="store_true", help="print only the JSON (one line)")
     p.add_argument("--llm", action="store_true", help="use the LLM endpoint of the config (llm.base_url), with fallback")
     p.add_argument("--tagger", action="store_true",
-                   help="reconcile the parse with the instruction tagger, as eval.tagger does (eval.tagger_file)")
+                   help="reconcile the parse with the instruction tagger, as `ragnav eval` does by default "
+                        "(eval.tagger, eval.tagger_file; without the house's memory, which eval also grounds in)")
     p.set_defaults(func=cmd_parse)
 
     p = sub.add_parser("episodes", parents=[common], help="generate multi-goal episodes for a scene set")
