@@ -337,6 +337,22 @@ def test_a_goal_without_a_reading_takes_the_one_its_clause_says():
     assert out[1].location is not None
 
 
+def test_a_goal_whose_words_another_goal_holds_stands_where_they_next_occur():
+    """'Riddle sheet: ... the lamp at 52 °C, or the riddle won't work': the tagged phrase 'riddle' is the title's;
+    the remark 'riddle won't work' stands at its own words, so the lamp's clause (and its reading) is the lamp's
+    alone and the remark takes none."""
+    from ragnav_jax.language.types import Subgoal, Target
+
+    text = "Riddle sheet: first the lamp at 52 °C, or the riddle won't work."
+    sgs = tuple(Subgoal(i, Target(h, h), text=h) for i, h in enumerate(["riddle sheet", "lamp", "riddle won't work"]))
+    p = probs_for(text, {"riddle": BT, "lamp": BT})
+    ws = [w.lower() for w in words(text)]
+    p[len(ws) - 1 - ws[::-1].index("riddle")] = probs_for("x", {})[0]  # the second "riddle" is untagged
+    out, _, _ = reconcile(text, sgs, p, clauses=True)
+    assert [(s.target.head, [(c.reading, c.value) for c in s.sensors]) for s in out] == [
+        ("riddle sheet", []), ("lamp", [("temperature_c", 52.0)]), ("riddle won't work", [])]
+
+
 def test_caption_descriptors_are_the_words_before_a_name_and_the_state_after_that_is():
     from ragnav_jax.evaluation.grounding import caption_descriptors
 
