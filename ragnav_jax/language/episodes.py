@@ -805,6 +805,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_q": ("phrasings_q", "q"), "unseen_r": ("phrasings_r", "r"),
                     "unseen_s": ("phrasings_s", "s"), "unseen_t": ("phrasings_t", "t"),
                     "unseen_u": ("phrasings_u", "u"), "unseen_v": ("phrasings_v", "v"),
+                    "unseen_x": ("phrasings_x", "x"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
