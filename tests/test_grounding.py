@@ -188,6 +188,19 @@ def test_a_describing_word_read_as_a_goal_with_a_remark_of_its_own_still_goes_to
     assert [(s.target.head, s.target.attributes, s.room) for s in kept] == [("sofa", ("lilac",), "den")]
 
 
+def test_a_remark_dropped_gives_the_goal_before_the_describing_words_it_holds(verifier):
+    """'the sofa, answering the description lilac': the remark 'description lilac' names nothing and goes, but
+    lilac, a word the memory describes things with, is the sofa's. Words no caption says go with the remark."""
+    captions = "a lilac sofa | the red shelf unit"
+    kept, dropped = ground_subgoals(verifier, [goal("sofa", "the sofa"),
+                                               goal("description lilac", "answering the description lilac"),
+                                               goal("spice rack", "the spice rack"),
+                                               goal("description mauve", "answering the description mauve")],
+                                    VOCAB, captions, descriptors={"lilac", "red"})
+    assert [(s.target.head, s.target.attributes) for s in kept] == [("sofa", ("lilac",)), ("spice rack", ())]
+    assert dropped == ("description lilac", "description mauve")
+
+
 def test_a_goal_measured_by_a_sensor_keeps_a_word_the_house_never_uses(verifier):
     """'the appliance in the pantry at about 21 degrees': no recorded name reaches 'appliance', but a goal
     measured by a sensor is checked by the names that fit it best (Verifier.verdicts); without the reading it is

@@ -35,9 +35,10 @@ against the memory of the house:
   the rule off (tests/test_eval.py does so for a synthetic memory that never saw the sofa);
 - a goal that is only words the memory describes things with and names nothing by ("the amp, retro" read
   as a goal "retro") gives them to the goal before it as attributes, and its room if that goal has none
-  ("the bean bag, turquoise by the look of it, in the games room"); one that is only a room name the
-  memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it to the goal
-  before it as its room;
+  ("the bean bag, turquoise by the look of it, in the games room"), and a goal dropped as a remark gives the
+  goal before it such words it holds ("the chaise longue, answering the description lilac"); one that is only
+  a room name the memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it
+  to the goal before it as its room;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
   lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
   memory ever said it ('required' from "no further action is required", 'noted', 'requested').
@@ -51,7 +52,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 import numpy as np
 
@@ -209,9 +210,11 @@ def _anchor_phrases(t: Target) -> list[str]:
     return [x for r in t.relations for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
 
 
-def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str], captions: str | None = None
-                    ) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
-    """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones)."""
+def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str], captions: str | None = None,
+                    descriptors: Collection[str] = ()) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
+    """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones).
+    descriptors: the words the house's captions describe things by (`caption_descriptors`), which a remark
+    dropped gives the goal before it."""
     if not vocab:
         return tuple(subgoals), ()
     kept, dropped = [], []
@@ -244,6 +247,14 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
         g = ground_subgoal(verifier, sg, vocab, captions)
         if g is None:
             dropped.append(sg.target.phrase)
+            if kept:  # a remark's describing words describe the goal before it ("the chaise longue, answering the
+                # description lilac": the remark "description lilac" goes, lilac stays)
+                prev = kept[-1].target
+                said_here = [w for x in (*t.attributes, t.head) for w in _WORD.findall(x)
+                             if w in descriptors and w not in names and w not in prev.attributes]
+                if said_here:
+                    kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(
+                        prev, attributes=prev.attributes + tuple(dict.fromkeys(said_here))))
         else:
             kept.append(g)
     return tuple(kept), tuple(dropped)
@@ -283,7 +294,7 @@ class MemoryGrounder:
         key = (ep.scene, subgoals)
         if key not in self._done:
             self._done[key] = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()),
-                                              self.captions.get(ep.scene))
+                                              self.captions.get(ep.scene), self.descriptors.get(ep.scene, ()))
         kept, dropped = self._done[key]
         if dropped:
             self.dropped[ep.id] = dropped
