@@ -41,7 +41,12 @@ against the memory of the house:
   to the goal before it as its room;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
   lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
-  memory ever said it ('required' from "no further action is required", 'noted', 'requested').
+  memory ever said it ('required' from "no further action is required", 'noted', 'requested');
+- an anchor must name something (`ground_relations`): one with a number in it is a coordinate ("at easting 4.5")
+  and goes, one with a closed-class word ("by the look of it") is repaired to the recorded name in it or goes;
+  inside something the memory never named is a room ("in the bakehouse"), the room word it starts with where
+  words follow ("in the sunroom whose NDVI is the lowest going"), and no room where it is an adverb ("walk it
+  in exactly").
 
 A head the memory used itself, or one that reaches `tau_head` and holds no closed-class word, is left as
 parsed: the step changes nothing that the parser read correctly. Nothing here reads the scene's true
