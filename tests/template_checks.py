@@ -1,4 +1,4 @@
-"""Checks shared by the tests of template sets M to U: each takes the set's own functions and its own words
+"""Checks shared by the tests of template sets M to X: each takes the set's own functions and its own words
 (relation words, comparator readers, order cues), so the readers stay independent of the templates they check."""
 
 from __future__ import annotations
@@ -63,6 +63,29 @@ def check_sensor(rendered: tuple, c, comparator, low: str, unit_c: str, unit_pct
     assert comparator(text) == c.comparator, text
     unit = "c" if re.search(unit_c, text.lower()) else "%" if re.search(unit_pct, text) else ""
     assert unit == written.unit, text
+
+
+def check_sensor_goal(render_sensor, render_goal, c, sg: Subgoal, seed: int, numbers) -> None:
+    """A goal rendered with a sensor phrase keeps its head, room and phrase: a superlative adjective stands before
+    the noun phrase (its states hyphenated with it), a tail after the head (and after the room for a superlative,
+    which is read inside it); the only number in the text is the constraint's (read by `numbers`)."""
+    rng = np.random.default_rng(seed)
+    prefix, tail, _ = render_sensor(rng, c)
+    sg = Subgoal(0, Target(sg.target.phrase, sg.target.head, sg.target.attributes), room=sg.room)
+    text = render_goal(rng, sg, prefix=prefix, tail=tail)
+    assert _has(text, sg.target.head), text
+    if sg.room:
+        assert _has(text, sg.room), text
+    if prefix:  # a superlative adjective stands before the noun phrase, the attributes with it
+        states = [a for a in sg.target.attributes if a not in sg.target.phrase.split()]
+        starts = (f"the {prefix} {sg.target.phrase}", f"the {prefix} {' '.join(s.replace(' ', '-') for s in states)} "
+                  f"{sg.target.phrase}")
+        assert text.startswith(starts), text
+    else:
+        assert tail in text and text.index(sg.target.head) < text.index(tail), text
+        if sg.room and c.is_superlative:  # a superlative is read inside the room: the room comes first
+            assert text.index(sg.room) < text.index(tail), text
+    assert numbers(text) == ([] if c.is_superlative else [pytest.approx(c.value, abs=0.006)]), text
 
 
 def check_coordinates(hint_text, render_goal, render_instruction, x: float, y: float, seed: int, as_read=lambda t: t) -> None:
