@@ -501,10 +501,6 @@ def loose_hint(clause: str, used: Sequence[float] = ()):
     return Location(nums[0], nums[1]) if len(nums) == 2 else None
 
 
-def _phrases_alt(phrases) -> str:
-    return "|".join(re.escape(p) for p in sorted(phrases, key=len, reverse=True))
-
-
 def loose_reading(clause: str, used: Sequence[float] = ()):
     """A sensor constraint from a goal's clause, up to its first line break, that the parser could not read
     ("(the NDVI meter puts it at 0.60 tops)", "temperature-wise: already past 0 degrees"): a reading the lexicon
@@ -513,7 +509,7 @@ def loose_reading(clause: str, used: Sequence[float] = ()):
     number before it, one said after a number after it), or "about" where the clause has none; None unless
     there is exactly one such number and a reading."""
     from ragnav_jax.language import lexicon as L
-    from ragnav_jax.language.parser import _number_words, _sensor
+    from ragnav_jax.language.parser import _alt, _number_words, _sensor
     from ragnav_jax.language.types import ParseError
 
     line = _number_words(re.sub(r"(?<![\w.])\.(\d)", r"0.\1", clause.split("\n", 1)[0].lower()))
@@ -522,14 +518,14 @@ def loose_reading(clause: str, used: Sequence[float] = ()):
         return None
     num = nums[0]
     unit = _UNIT.match(line, num.end())
-    name = re.search(rf"\b(?:{_phrases_alt(L.READING_NAMES)})\b", line)
+    name = re.search(rf"\b(?:{_alt(L.READING_NAMES)})\b", line)
     if name is None and unit is None:
         return None
     # a comparator phrase before the number ("under 40"), or one written after it ("40 or more")
     cmps = [(num.start() - m.end(), L.COMPARATOR_PHRASES[m.group()])
-            for m in re.finditer(rf"\b(?:{_phrases_alt(L.COMPARATOR_PHRASES)})(?!\w)", line[: num.start()])]
+            for m in re.finditer(rf"\b(?:{_alt(L.COMPARATOR_PHRASES)})(?!\w)", line[: num.start()])]
     cmps += [(m.start(), L.COMPARATOR_POSTFIX[m.group()])
-             for m in re.finditer(rf"\b(?:{_phrases_alt(L.COMPARATOR_POSTFIX)})(?!\w)", line[num.end():])]
+             for m in re.finditer(rf"\b(?:{_alt(L.COMPARATOR_POSTFIX)})(?!\w)", line[num.end():])]
     cmp = min(cmps)[1] if cmps else "approx"
     try:
         return _sensor(L.READING_NAMES[name.group()] if name else None, cmp, num.group(),
