@@ -539,6 +539,9 @@ class EvalConfig:
     # drives until that many lanes need a reflection (legs ended, episodes to load) and reflects on just those,
     # gathered into a batch of that size, while the others drive on (1.0: every lane, after every leg of the batch
     # has ended). Rows do not depend on it; speed and compilation do (README: The device loop)
+    reflections: str = "auto"  # device engine: "serial" reflects on its lanes one after another (lax.map: each
+    # lane runs only its own branches and grid searches), "batched" on all at once (vmap: every branch computed
+    # for every lane, as a GPU wants), "auto" serial on a CPU. Rows do not depend on it
     look_closer: bool = True  # not confirmed at the key pose: drive towards the retrieved instance and look again
     record_legs: bool = False  # keep every leg's driven waypoints and simulated end pose in the episode rows (plots)
     precheck: bool = True  # RAGNav's candidates: drop those the memory's own captions contradict (category, attribute)
@@ -570,6 +573,8 @@ class EvalConfig:
         _check(self.search_nodes >= 0, "eval.search_nodes", "must be >= 0")
         _check(self.engine in ("host", "device"), "eval.engine", "must be 'host' or 'device'")
         _check(0.0 < self.refill <= 1.0, "eval.refill", "must be in (0, 1]")
+        _check(self.reflections in ("auto", "serial", "batched"), "eval.reflections",
+               "must be 'auto', 'serial' or 'batched'")
         _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")

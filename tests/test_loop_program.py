@@ -173,11 +173,14 @@ def test_closed_loop_sweep_matches_the_device_eval(setup, apartment, both):
     assert sum(p._cache_size() for p in progs) == before  # the device eval's compiled loop ran the sweep
 
 
-def test_refill_changes_speed_not_rows(setup, apartment, both):
-    """eval.refill 1.0 (every lane reflects at once, after every leg of the batch has ended) gives the same rows
-    as the module's reflections of 2 lanes gathered from the 4 while the other 2 drive on: a second program."""
+def test_refill_and_reflections_change_speed_not_rows(setup, apartment, both):
+    """eval.refill 1.0 (every lane reflects at once, after every leg of the batch has ended) with batched
+    reflections (vmapped: every branch and grid search computed for every lane, as on a GPU) gives the same rows
+    as the module's reflections of 2 lanes gathered from the 4 while the other 2 drive on, one lane after another
+    (serial, the CPU's default): a second program."""
     out, _ = both
-    rows, _ = _rows(setup, apartment, "ragnav", "device", refill=1.0)
+    assert setup[0].eval.reflections == "auto" and jax.default_backend() == "cpu"  # the module's: serial
+    rows, _ = _rows(setup, apartment, "ragnav", "device", refill=1.0, reflections="batched")
     keys = ("success", "goal_status", "steps", "travel_distance_m", "declarations")
     assert [{k: r[k] for k in keys} for r in rows] == [{k: r[k] for k in keys} for r in out["device"]["ragnav"]]
     progs = [v for k, v in setup[3].cache.items() if k[0] == "device_program"]

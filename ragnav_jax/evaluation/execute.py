@@ -29,6 +29,7 @@ from ragnav_jax.sim.sensors import look_around
 from ragnav_jax.world.scene import Scene
 
 PROGRESS_EPS = 0.002  # metres per control step below which a step counts as no progress
+STATE_FIELDS = ("qpos", "qvel", "act", "qacc_warmstart", "time")  # what a physics step reads of mjx.Data
 
 
 @struct.dataclass
@@ -128,7 +129,8 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         d2, p = physics(m, d, cmd, sim.substeps)
         moved = jnp.linalg.norm(d2.qpos[:2] - pose[:2])
         keep = lambda a, b: jax.tree.map(lambda x, y: jnp.where(active, x, y), a, b)  # noqa: E731
-        d = keep(d2, d)
+        # a leg that ended keeps its state; d2's other fields are recomputed from the state by the next step
+        d = d2.replace(**keep({k: getattr(d2, k) for k in STATE_FIELDS}, {k: getattr(d, k) for k in STATE_FIELDS}))
         path = keep(path2, path)
         steps = steps + active.astype(jnp.int32)
         length = length + jnp.where(active, moved, 0.0)
@@ -157,19 +159,19 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
         buf = jnp.zeros((E, ev.leg_max_steps if record else 0, 3), jnp.float32)
 
         def cond(x):
-            return jnp.sum(status(x[1])[1]) > keep
+            return jnp.sum(x[3]) > keep
 
         def body(x):
-            t, c, buf = x
-            active = status(c)[1]
+            t, c, buf, active = x
             out = jax.vmap(one_step, in_axes=(in_axes, 0, 0, 0, 0, 0, 0, 0))(
                 m, c.d, c.paths, active, c.steps, c.length, c.stall, c.pen)
             if record:  # an episode is active for its first `steps` iterations, so row t is its step t + 1
                 buf = jax.lax.dynamic_update_slice_in_dim(buf, out[0].qpos[:, None, :3], t, axis=1)
             d, paths, steps, length, stall, pen = out
-            return t + 1, c.replace(d=d, paths=paths, steps=steps, length=length, stall=stall, pen=pen), buf
+            c = c.replace(d=d, paths=paths, steps=steps, length=length, stall=stall, pen=pen)
+            return t + 1, c, buf, status(c)[1]
 
-        _, c, buf = jax.lax.while_loop(cond, body, (jnp.int32(0), c, buf))
+        _, c, buf, _ = jax.lax.while_loop(cond, body, (jnp.int32(0), c, buf, status(c)[1]))
         arrived, going = status(c)
         return c, arrived, going, buf
 

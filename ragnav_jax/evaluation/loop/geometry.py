@@ -407,37 +407,50 @@ def local_route(a, c, obs: dict, origin, clear, shape, need, tight, anywhere: bo
     ia, ic = (jnp.clip(jnp.round((p - origin) / res).astype(jnp.int32), 0, hw - 1) for p in (a, c))
     top = jnp.clip((ia + ic) // 2 - w // 2, 0, jnp.asarray(clear.shape, jnp.int32) - w)  # the block's corner
     blk = lax.dynamic_slice(clear, (top[0], top[1]), (w, w))
-    gi, gj = top[0] + jnp.arange(w), top[1] + jnp.arange(w)  # the block's rows and columns in the grid
     la, lc = ia - top, ic - top
     ends_in = jnp.all((la >= 0) & (la < w) & (lc >= 0) & (lc < w))
     la, lc = jnp.clip(la, 0, w - 1), jnp.clip(lc, 0, w - 1)
-    r2 = math.floor((escape / res) ** 2)  # the host compares integer squares with (escape / res) ** 2
-    near = [((gi - e[0]) ** 2)[:, None] + ((gj - e[1]) ** 2)[None, :] <= r2 for e in (ia, ic)]
-    pad = int(GRID_WINDOW_M / res)
-    lo_ij, hi_ij = jnp.minimum(ia, ic) - pad, jnp.maximum(ia, ic) + pad
-    box = ((gi >= lo_ij[0]) & (gi <= hi_ij[0]))[:, None] & ((gj >= lo_ij[1]) & (gj <= hi_ij[1]))[None, :]
-    box = box & (gi < hw[0])[:, None] & (gj < hw[1])[None, :]
-    ends = _one_cell(la, w) | _one_cell(lc, w)
+    straight_points = jnp.where(jnp.arange(max_points)[:, None] == 0, a[None], c[None]).astype(jnp.float32)
+    run = ~straight & ends_in & go
 
-    def passable(t, region):  # (w, w) bool: the cells of a tier
-        ok = blk >= t
-        for e, disc in zip((ia, ic), near):  # let a robot parked in a tight spot out
-            ok = ok | (disc & (blk >= jnp.minimum(clear[e[0], e[1]], t) - 1e-6))
-        return (ok & region) | ends
+    def searched():
+        gi, gj = top[0] + jnp.arange(w), top[1] + jnp.arange(w)  # the block's rows and columns in the grid
+        r2 = math.floor((escape / res) ** 2)  # the host compares integer squares with (escape / res) ** 2
+        near = [((gi - e[0]) ** 2)[:, None] + ((gj - e[1]) ** 2)[None, :] <= r2 for e in (ia, ic)]
+        pad = int(GRID_WINDOW_M / res)
+        lo_ij, hi_ij = jnp.minimum(ia, ic) - pad, jnp.maximum(ia, ic) + pad
+        box = ((gi >= lo_ij[0]) & (gi <= hi_ij[0]))[:, None] & ((gj >= lo_ij[1]) & (gj <= hi_ij[1]))[None, :]
+        box = box & (gi < hw[0])[:, None] & (gj < hw[1])[None, :]
+        ends = _one_cell(la, w) | _one_cell(lc, w)
 
-    whole = (gi < hw[0])[:, None] & (gj < hw[1])[None, :]
-    tiers = [(need, box), (tight, box)] + ([(need, whole), (tight, whole)] if anywhere else [])
-    oks = _pack(jnp.stack([passable(t, m) for t, m in tiers]))  # (T, w, w / 32)
-    tier, steps, layers = _search(oks, la, lc, ~straight & ends_in & go)
-    cap = 4 * w
-    found = (tier < len(tiers)) & (steps > 0) & (steps < cap)
-    cells = _descend(layers, la, steps, cap, found)  # (cap, 2) a's cell ... c's cell, padded with c's
-    j = jnp.arange(cap)[:, None]
-    xy = (origin[None] + (cells + top[None]).astype(jnp.float32) * res).astype(jnp.float32)
-    xy = jnp.where(j == 0, a[None], jnp.where(j >= steps, c[None], xy))
-    sight = jnp.stack([t for t, _ in tiers])[jnp.minimum(tier, len(tiers) - 1)] * 0.999
-    kept, n = _string_pull(xy, steps, obs, sight, max_points, w, found)
-    points = jnp.where(found, xy[kept], jnp.where(jnp.arange(max_points)[:, None] == 0, a[None], c[None]))
+        def passable(t, region):  # (w, w) bool: the cells of a tier
+            ok = blk >= t
+            for e, disc in zip((ia, ic), near):  # let a robot parked in a tight spot out
+                ok = ok | (disc & (blk >= jnp.minimum(clear[e[0], e[1]], t) - 1e-6))
+            return (ok & region) | ends
+
+        whole = (gi < hw[0])[:, None] & (gj < hw[1])[None, :]
+        tiers = [(need, box), (tight, box)] + ([(need, whole), (tight, whole)] if anywhere else [])
+        oks = _pack(jnp.stack([passable(t, m) for t, m in tiers]))  # (T, w, w / 32)
+        tier, steps, layers = _search(oks, la, lc, run)  # (under vmap: no layers where run is False)
+        cap = 4 * w
+        found = (tier < len(tiers)) & (steps > 0) & (steps < cap)
+        cells = _descend(layers, la, steps, cap, found)  # (cap, 2) a's cell ... c's cell, padded with c's
+        sight = jnp.stack([t for t, _ in tiers])[jnp.minimum(tier, len(tiers) - 1)] * 0.999
+        kept, n = _string_pull(coords(cells, steps), steps, obs, sight, max_points, w, found)
+        return cells, steps, found, kept, n
+
+    def coords(cells, steps):  # (cap, 2) a, the cells' centres, c from `steps` on
+        j = jnp.arange(cells.shape[0])[:, None]
+        xy = (origin[None] + (cells + top[None]).astype(jnp.float32) * res).astype(jnp.float32)
+        return jnp.where(j == 0, a[None], jnp.where(j >= steps, c[None], xy))
+
+    # a conditional where it can be one (a single segment, not under vmap): a segment that needs no search
+    # costs no grid work; under vmap it runs as a select, both sides computed. The points are placed after it,
+    # by the same code in either case (bit for bit as before, whatever XLA fuses inside the branch)
+    cells, steps, found, kept, n = lax.cond(run, searched, lambda: (
+        jnp.zeros((4 * w, 2), jnp.int32), jnp.int32(0), jnp.bool_(False), jnp.zeros(max_points, jnp.int32), jnp.int32(2)))
+    points = jnp.where(found, coords(cells, steps)[kept], straight_points)
     return points.astype(jnp.float32), jnp.where(found, n, 2).astype(jnp.int32)
 
 

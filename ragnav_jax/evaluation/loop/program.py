@@ -31,9 +31,12 @@ from ragnav_jax.evaluation.execute import Driving
 from ragnav_jax.evaluation.loop import geometry as geo
 from ragnav_jax.evaluation.loop import step
 from ragnav_jax.evaluation.loop.state import (
+    CLOSER,
     FAILED,
+    NAV,
     NONE,
     REASON_NAMES,
+    SEARCH,
     STATUS_NAMES,
     Flags,
     Inputs,
@@ -54,7 +57,8 @@ def flags_of(cfg: Config, look_cost: int) -> Flags:
                  found_radius=ev.found_radius, approach_gap=ev.approach_gap, robot_radius=sim.robot_radius,
                  need=sim.robot_radius + GRID_MARGIN_M, tight=sim.robot_radius + TIGHT_GAP_M,
                  solver=cfg.planning.solver, search_iters=cfg.planning.local_search_iters, path_points=ev.path_points,
-                 refill=ev.refill)
+                 refill=ev.refill, serial=ev.reflections == "serial" or (ev.reflections == "auto"
+                                                                          and jax.default_backend() == "cpu"))
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -182,6 +186,24 @@ def _put(tree, idx, sub):
     return jax.tree.map(lambda x, y: x.at[idx].set(y, unique_indices=True), tree, sub)
 
 
+def _lanewise(f, in_axes, serial: bool):
+    """jax.vmap(f, in_axes) over a batch of lanes; with `serial` (static), f on one lane after another
+    (lax.map), so its lax.cond / switch run one branch and its while_loops stop when that lane is done."""
+    if not serial:
+        return jax.vmap(f, in_axes=in_axes)
+
+    def mapped(*args):
+        batched = [a for a, ax in zip(args, in_axes) if ax is not None]
+
+        def one(lane):
+            it = iter(lane)
+            return f(*[a if ax is None else next(it) for a, ax in zip(args, in_axes)])
+
+        return jax.lax.map(one, batched)
+
+    return mapped
+
+
 def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=None, *, fl: Flags, init,
                 advance, look, status, lanes: int | None = None) -> State:
     """Runs every episode of a queue to its end on `lanes` lanes. inp, scene_idx (Q,) executor scene, start_pose
@@ -201,6 +223,7 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
     Q = inp.b.shape[0]
     L = Q if lanes is None else min(lanes, Q)
     K = max(1, min(L, math.ceil(fl.refill * L)))  # lanes one reflection serves
+    lanewise = functools.partial(_lanewise, serial=fl.serial)
     count = jnp.int32(Q) if count is None else jnp.asarray(count, jnp.int32)
     first = initial_state(inp, lam, world, fl, N, O)  # (Q) every queued episode's first plan
     start_d = init(scene_idx, start_pose)  # (Q) and its MJX state at the start pose
@@ -235,16 +258,19 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         Returns (st, drv, pending, ep, nxt, out)."""
         li, sidx, lm = _take(inp, ep), scene_idx[ep], lam[ep]
         pose = drv.d.qpos[:, :3]
-        visible, _ = look(sidx, drv.d)
         ended = pending & ~going
+        # the look-around where a leg to a key pose or a search ended (after_leg reads it there alone)
+        looks = ended & ((st.leg_kind == NAV) | (st.leg_kind == SEARCH) | (st.leg_kind == CLOSER))
+        visible = jax.lax.cond(jnp.any(looks), lambda d: look(sidx, d)[0],
+                               lambda d: jnp.zeros((looks.shape[0], world.known.shape[1]), bool), drv.d)
         st = _select(ended, st.replace(steps=st.steps + drv.steps, length=st.length + drv.length,
                                        penetration=jnp.maximum(st.penetration, drv.pen), legs=st.legs + 1), st)
-        after = jax.vmap(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
-                         in_axes=(0, 0, None, 0, 0, 0, 0))(st, li, world, pose, arrived, visible, lm)
+        after = lanewise(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
+                         (0, 0, None, 0, 0, 0, 0))(st, li, world, pose, arrived, visible, lm)
         st = _select(ended, after, st)
         free = ~going & ~st.done
         over = free & (st.steps + st.look_steps >= fl.max_steps)
-        left = jax.vmap(step._left_mask)(st)
+        left = lanewise(step._left_mask, (0,))(st)
         st = st.replace(done=st.done | over, reason=jnp.where(over, 2, st.reason), n_left=jnp.where(over, 0, st.n_left),
                         status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
                         leg_kind=jnp.where(over, NONE, st.leg_kind))
@@ -253,10 +279,10 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         li, lm = _take(inp, ep), lam[ep]
         pose = drv.d.qpos[:, :3]
         free = ~going & ~st.done
-        nxt_leg = jax.vmap(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_axes=in_ep)(st, li, world, pose, lm)
+        nxt_leg = lanewise(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_ep)(st, li, world, pose, lm)
         st = _select(free, nxt_leg, st)
         start = free & ~st.done & (st.leg_kind != NONE)
-        pts, n = jax.vmap(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_axes=in_ep[:4])(st, li, world, pose)
+        pts, n = lanewise(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_ep[:4])(st, li, world, pose)
         allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
         new = Driving.start(drv.d, pts, jnp.where(start, n, 0), jnp.where(start, allow, 0).astype(jnp.int32))
         return st, _select(start, new, drv), start | (pending & going), ep, nxt, out

@@ -42,6 +42,8 @@ class Flags(NamedTuple):
     search_iters: int  # planning.local_search_iters
     path_points: int  # P: waypoints per leg
     refill: float = 1.0  # eval.refill: share of the lanes one reflection serves
+    serial: bool = False  # a reflection serves one lane: its branches and grid searches run for it alone
+    # (lax.cond / switch as conditionals, a leg's segments one after another), not as selects over a batch
 
 
 @struct.dataclass

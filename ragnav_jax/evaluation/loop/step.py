@@ -284,7 +284,9 @@ def _drive_points(pts, n, is_node, nodes, raw, w, b, fl: Flags):
     a = jnp.concatenate([pts[jnp.stack([0, last])], route[:-1]])
     c = jnp.concatenate([pts[jnp.stack([1, last + 1])], route[1:]])
     go = jnp.concatenate([use & ~raw, seg])
-    local, count = jax.vmap(lambda a, c, go: _local(w, b, a, c, fl, False, go))(a, c, go)
+    one = lambda a, c, go: _local(w, b, a, c, fl, False, go)  # noqa: E731
+    # fl.serial: one segment after another, each searched only where it needs it (lax.cond); else all at once
+    local, count = jax.lax.map(lambda x: one(*x), (a, c, go)) if fl.serial else jax.vmap(one)(a, c, go)
     pad = lambda p: jnp.concatenate([p, jnp.repeat(p[:, -1:], K - p.shape[1], 1)], axis=1)  # noqa: E731
     way, m = _splice(pts, n, is_node, nodes, (pad(local[:2]), count[:2], use), w, b)
     plans, cnt = local[2:], count[2:]
