@@ -186,20 +186,24 @@ def _put(tree, idx, sub):
     return jax.tree.map(lambda x, y: x.at[idx].set(y, unique_indices=True), tree, sub)
 
 
-def _lanewise(f, in_axes, serial: bool):
+def _lanewise(f, in_axes, serial: bool, when=None, otherwise=None):
     """jax.vmap(f, in_axes) over a batch of lanes; with `serial` (static), f on one lane after another
-    (lax.map), so its lax.cond / switch run one branch and its while_loops stop when that lane is done."""
+    (lax.map), so its lax.cond / switch run one branch and its while_loops stop when that lane is done, and a
+    lane where `when` (bool, leading axis) is False runs `otherwise` (same arguments, same output structure:
+    a value the caller discards) instead of f."""
     if not serial:
         return jax.vmap(f, in_axes=in_axes)
 
     def mapped(*args):
         batched = [a for a, ax in zip(args, in_axes) if ax is not None]
+        go = jnp.ones(jax.tree.leaves(batched)[0].shape[0], bool) if when is None else when
 
         def one(lane):
-            it = iter(lane)
-            return f(*[a if ax is None else next(it) for a, ax in zip(args, in_axes)])
+            run, it = lane[0], iter(lane[1:])
+            lane_args = [a if ax is None else next(it) for a, ax in zip(args, in_axes)]
+            return f(*lane_args) if when is None else jax.lax.cond(run, f, otherwise, *lane_args)
 
-        return jax.lax.map(one, batched)
+        return jax.lax.map(one, [go, *batched])
 
     return mapped
 
@@ -243,30 +247,30 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         return jax.tree.map(lambda o, x: o.at[row].set(x, unique_indices=True), out, st)
 
     def load(args):
-        """Lanes whose episode ended take the next ones of the queue, in lane order."""
-        st, drv, ep, nxt = args
+        """Lanes whose episode ended take the next ones of the queue, in lane order (their MJX state: `took`)."""
+        st, ep, nxt, _ = args
         new = nxt + jnp.cumsum(st.done) - 1
         take = st.done & (new < count)
         ep = jnp.where(take, new, ep)
         st = _select(take, _take(first, ep), st)
-        drv = drv.replace(d=_select(take, _take(start_d, ep), drv.d))
-        return st, drv, ep, nxt + jnp.sum(take)
+        return st, ep, nxt + jnp.sum(take), take
 
-    def reflect(st, drv, arrived, going, pending, ep, nxt, out, lane):
+    def reflect(st, drv, pose, lane_d, arrived, going, pending, ep, nxt, out, lane):
         """Lanes not driving: the end of their leg (`pending`), a new episode where theirs ended, then their next
-        leg; every argument but nxt and out has the reflected lanes' leading axis, `lane` their lane numbers.
-        Returns (st, drv, pending, ep, nxt, out)."""
+        leg; every argument but lane_d, nxt and out has the reflected lanes' leading axis, `lane` their lane
+        numbers. drv is their Driving without its MJX state (d=None: gathering and scattering mjx.Data's 84
+        arrays costs more than a reflection on a CPU), pose (K, 3) theirs, lane_d() gathers their mjx.Data for
+        the look-around. Returns (st, drv, pending, ep, nxt, out, took: lanes that took a new episode)."""
         li, sidx, lm = _take(inp, ep), scene_idx[ep], lam[ep]
-        pose = drv.d.qpos[:, :3]
         ended = pending & ~going
         # the look-around where a leg to a key pose or a search ended (after_leg reads it there alone)
         looks = ended & ((st.leg_kind == NAV) | (st.leg_kind == SEARCH) | (st.leg_kind == CLOSER))
-        visible = jax.lax.cond(jnp.any(looks), lambda d: look(sidx, d)[0],
-                               lambda d: jnp.zeros((looks.shape[0], world.known.shape[1]), bool), drv.d)
+        visible = jax.lax.cond(jnp.any(looks), lambda: look(sidx, lane_d())[0],
+                               lambda: jnp.zeros((looks.shape[0], world.known.shape[1]), bool))
         st = _select(ended, st.replace(steps=st.steps + drv.steps, length=st.length + drv.length,
                                        penetration=jnp.maximum(st.penetration, drv.pen), legs=st.legs + 1), st)
-        after = lanewise(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl),
-                         (0, 0, None, 0, 0, 0, 0))(st, li, world, pose, arrived, visible, lm)
+        after = lanewise(lambda s, i, w, p, a, v, lm: step.after_leg(s, i, w, p, a, v, lm, fl), (0, 0, None, 0, 0, 0, 0),
+                         when=ended, otherwise=lambda s, *_: s)(st, li, world, pose, arrived, visible, lm)
         st = _select(ended, after, st)
         free = ~going & ~st.done
         over = free & (st.steps + st.look_steps >= fl.max_steps)
@@ -275,17 +279,21 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
                         status=jnp.where(over[:, None] & left, FAILED["budget"], st.status),
                         leg_kind=jnp.where(over, NONE, st.leg_kind))
         out = write(out, st, ep, lane)
-        st, drv, ep, nxt = jax.lax.cond(jnp.any(st.done) & (nxt < count), load, lambda a: a, (st, drv, ep, nxt))
+        st, ep, nxt, took = jax.lax.cond(jnp.any(st.done) & (nxt < count), load, lambda a: a,
+                                         (st, ep, nxt, jnp.zeros_like(st.done)))
         li, lm = _take(inp, ep), lam[ep]
-        pose = drv.d.qpos[:, :3]
+        pose = jnp.where(took[:, None], start_d.qpos[ep, :3], pose)
         free = ~going & ~st.done
-        nxt_leg = lanewise(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_ep)(st, li, world, pose, lm)
+        nxt_leg = lanewise(lambda s, i, w, p, lm: step.next_leg(s, i, w, p, lm, fl), in_ep, when=free,
+                           otherwise=lambda s, *_: s)(st, li, world, pose, lm)
         st = _select(free, nxt_leg, st)
         start = free & ~st.done & (st.leg_kind != NONE)
-        pts, n = lanewise(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_ep[:4])(st, li, world, pose)
+        pts, n = lanewise(lambda s, i, w, p: step.leg_waypoints(s, i, w, p, fl), in_ep[:4], when=start,
+                          otherwise=lambda *_: (jnp.zeros((fl.path_points, 2), jnp.float32), jnp.int32(0)))(
+            st, li, world, pose)
         allow = jnp.clip(jnp.minimum(fl.leg_max_steps, fl.max_steps - st.steps - st.look_steps), 0, None)
-        new = Driving.start(drv.d, pts, jnp.where(start, n, 0), jnp.where(start, allow, 0).astype(jnp.int32))
-        return st, _select(start, new, drv), start | (pending & going), ep, nxt, out
+        new = Driving.start(None, pts, jnp.where(start, n, 0), jnp.where(start, allow, 0).astype(jnp.int32))
+        return st, _select(start, new, drv), start | (pending & going), ep, nxt, out, took
 
     def cond(c):
         return jnp.any(~c[0].done) | (c[6] < count)
@@ -296,8 +304,14 @@ def closed_loop(world: World, inp: Inputs, scene_idx, start_pose, lam, count=Non
         # chosen that needs none is left as it is), round robin among those that need one so none waits for ever
         needs = ~going & (pending | ~st.done | (nxt < count))
         idx = jnp.argsort(jnp.where(needs, 0, L) + (lane - it * K) % L)[:K]
-        sub = reflect(*_take((st, drv, arrived, going, pending, ep), idx), nxt, out, idx)
-        (st, drv, pending, ep), nxt, out = _put((st, drv, pending, ep), idx, sub[:4]), sub[4], sub[5]
+        meta = drv.replace(d=None)
+        sub = reflect(_take(st, idx), _take(meta, idx), drv.d.qpos[idx, :3], lambda: _take(drv.d, idx),
+                      *_take((arrived, going, pending, ep), idx), nxt, out, idx)
+        (st, meta, pending, ep), nxt, out, took = _put((st, meta, pending, ep), idx, sub[:4]), sub[4], sub[5], sub[6]
+        # lanes that took a new episode start from its MJX state
+        d = jax.lax.cond(jnp.any(took), lambda d: _put(d, idx, _select(took, _take(start_d, ep[idx]), _take(d, idx))),
+                         lambda d: d, drv.d)
+        drv = meta.replace(d=d)
         unserved = needs.at[idx].set(False, unique_indices=True)
         # drive until K lanes need a reflection: legs in progress end, joining those still unserved. Once no more
         # than K legs are going (the batch's last ones), on K lanes gathered from the batch: a control step then
