@@ -119,11 +119,15 @@ def test_order_penalty_reaches_the_device_loop(setup, apartment):
     assert out[0.0]["travel_distance_m"] < out[1.0e4]["travel_distance_m"]
 
 
-def test_unknown_engine_is_a_config_error():
+def test_unknown_engine_or_reflections_is_a_config_error():
     from ragnav_jax.errors import UserError
 
     with pytest.raises(UserError, match="eval.engine"):
         load_config(None, ["eval.engine=gpu"])
+    with pytest.raises(UserError, match="eval.reflections"):
+        load_config(None, ["eval.reflections=parallel"])
+    flags = [program.flags_of(load_config(None, [f"eval.reflections={r}"]), 8).serial for r in ("serial", "batched")]
+    assert flags == [True, False]
 
 
 def test_device_loop_refuses_etpnav_directly(setup, apartment):
