@@ -7,9 +7,10 @@ candidates, verdict and search tables, the memory's paths, occupancy grids and l
 and after it (the final `State` written back into the host EpisodeStates, from which `metrics.episode_row`
 makes the rows). In between, each iteration of the while_loop reflects on the episodes whose leg ended
 (look-around with MJX camera visibility -> `step.after_leg` -> budget -> a lane whose episode ended takes the
-next queued one -> `step.next_leg` -> waypoints, all vmapped and masked over a share `eval.refill` of the lanes,
-gathered from the batch) and then drives (`Executor.advance`, a while_loop over MJX control steps) until that
-many lanes need a reflection again, so short legs do not wait for the batch's longest. eval.batch_size lanes run
+next queued one -> `step.next_leg` -> waypoints, on a share `eval.refill` of the lanes gathered from the
+batch: vmapped and masked, or on a CPU one lane after another, `eval.reflections`) and then drives
+(`Executor.advance`, a while_loop over MJX control steps) until that many lanes need a reflection again, so
+short legs do not wait for the batch's longest. eval.batch_size lanes run
 at once; a call queues several batches. The method is data (`Inputs`), the settings static `Flags`, the order
 penalty lambda an array: a sweep over it, and every method, reuse one compilation.
 
