@@ -142,3 +142,17 @@ def spoken_numbers(toks: list[str]) -> list[float]:
                 out.append(-float(tok) if neg else float(tok))
                 neg = False
     return out
+
+
+def target_truth(t: Target) -> dict:
+    """A target as the held-out sets' readers read it back: head, attributes before it, states, relations."""
+    pre = t.phrase[: len(t.phrase) - len(t.head)].split()
+    return {"head": t.head, "attrs": [a for a in t.attributes if a in pre],
+            "states": sorted(a for a in t.attributes if a not in pre),
+            "relations": [(r.type, target_truth(r.anchor)) for r in t.relations]}
+
+
+def reading_norm(got: dict) -> dict:
+    """A reading with its states sorted (their order in the sentence is free)."""
+    return {"head": got["head"], "attrs": got["attrs"], "states": sorted(got["states"]),
+            "relations": [(k, reading_norm(a)) for k, a in got["relations"]]}

@@ -14,7 +14,15 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from template_checks import check_coordinates, check_goal_layout, check_order, check_sensor, spoken_numbers
+from template_checks import (
+    check_coordinates,
+    check_goal_layout,
+    check_order,
+    check_sensor,
+    reading_norm,
+    spoken_numbers,
+    target_truth,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, _has, constraints, subgoals
 
 from ragnav_jax.language import phrasings_t as T
@@ -165,18 +173,6 @@ def read_goal(text: str) -> tuple[dict, str | None]:
     return got, room
 
 
-def _truth(t: Target) -> dict:
-    pre = t.phrase[: len(t.phrase) - len(t.head)].split()
-    return {"head": t.head, "attrs": [a for a in t.attributes if a in pre],
-            "states": sorted(a for a in t.attributes if a not in pre),
-            "relations": [(r.type, _truth(r.anchor)) for r in t.relations]}
-
-
-def _norm(got: dict) -> dict:
-    return {"head": got["head"], "attrs": got["attrs"], "states": sorted(got["states"]),
-            "relations": [(k, _norm(a)) for k, a in got["relations"]]}
-
-
 # ----------------------------------------------------------------------------------------------------
 # Goals
 
@@ -194,7 +190,7 @@ def test_goal_writes_every_piece(sg, seed):
 def test_goal_reads_back_exactly(sg, seed):
     text = T.render_goal_t(np.random.default_rng(seed), sg)
     got, room = read_goal(text)
-    assert _norm(got) == _truth(sg.target), text
+    assert reading_norm(got) == target_truth(sg.target), text
     assert room == sg.room, text
 
 
@@ -207,7 +203,7 @@ def test_reader_reads_a_nested_goal():
     for _ in range(120):
         text = T.render_goal_t(rng, Subgoal(0, t, room="music room"))
         got, room = read_goal(text)
-        assert _norm(got) == _truth(t) and room == "music room", text
+        assert reading_norm(got) == target_truth(t) and room == "music room", text
         assert text.index("music room") < text.index("sofa") < text.index("drums") < text.index("shelves"), text
         forms.add("square" if "drums]" in text else "found" if "(found " in text else "?")
     assert forms == {"square", "found"}
@@ -230,7 +226,6 @@ def test_attributes_states_and_rooms_take_every_form():
 
 # ----------------------------------------------------------------------------------------------------
 # Sensor phrases, read back by a reader of our own
-
 
 
 def numbers_in(text: str) -> list[float]:

@@ -20,7 +20,9 @@ from template_checks import (
     check_order,
     check_sensor,
     check_sensor_goal,
+    reading_norm,
     spoken_numbers,
+    target_truth,
 )
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
@@ -170,18 +172,6 @@ def read_goal(text: str) -> tuple[dict, str | None]:
     return got, room
 
 
-def _truth(t: Target) -> dict:
-    pre = t.phrase[: len(t.phrase) - len(t.head)].split()
-    return {"head": t.head, "attrs": [a for a in t.attributes if a in pre],
-            "states": sorted(a for a in t.attributes if a not in pre),
-            "relations": [(r.type, _truth(r.anchor)) for r in t.relations]}
-
-
-def _norm(got: dict) -> dict:
-    return {"head": got["head"], "attrs": got["attrs"], "states": sorted(got["states"]),
-            "relations": [(k, _norm(a)) for k, a in got["relations"]]}
-
-
 # ----------------------------------------------------------------------------------------------------
 # Goals
 
@@ -193,7 +183,7 @@ def test_goal_writes_every_piece_and_reads_back_exactly(sg, seed):
     check_goal_layout(text, sg, V_REL_WORDS)
     assert ") (" not in text and max(_depths(text), default=0) <= 1, text  # no brackets in a row, nor one in another
     got, room = read_goal(text)
-    assert _norm(got) == _truth(sg.target), text
+    assert reading_norm(got) == target_truth(sg.target), text
     assert room == sg.room, text
 
 
@@ -206,7 +196,7 @@ def test_reader_reads_a_nested_goal():
     for _ in range(120):
         text = V.render_goal_v(rng, Subgoal(0, t, room="music room"))
         got, room = read_goal(text)
-        assert _norm(got) == _truth(t) and room == "music room", text
+        assert reading_norm(got) == target_truth(t) and room == "music room", text
         assert text.index("music room") < text.index("sofa") < text.index("drums") < text.index("shelves"), text
         forms.add("specifically" if "(specifically the one " in text else "mind" if "(mind you, the one " in text
                   else "?")

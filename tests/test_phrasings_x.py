@@ -14,7 +14,15 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from template_checks import check_coordinates, check_goal_layout, check_order, check_sensor, spoken_numbers
+from template_checks import (
+    check_coordinates,
+    check_goal_layout,
+    check_order,
+    check_sensor,
+    reading_norm,
+    spoken_numbers,
+    target_truth,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.language import phrasings_x as X
@@ -148,18 +156,6 @@ def read_goal(text: str) -> tuple[dict, str | None]:
     return got, room
 
 
-def _truth(t: Target) -> dict:
-    pre = t.phrase[: len(t.phrase) - len(t.head)].split()
-    return {"head": t.head, "attrs": [a for a in t.attributes if a in pre],
-            "states": sorted(a for a in t.attributes if a not in pre),
-            "relations": [(r.type, _truth(r.anchor)) for r in t.relations]}
-
-
-def _norm(got: dict) -> dict:
-    return {"head": got["head"], "attrs": got["attrs"], "states": sorted(got["states"]),
-            "relations": [(k, _norm(a)) for k, a in got["relations"]]}
-
-
 @SETTINGS
 @given(sg=subgoals(), seed=st.integers(0, 2**31))
 def test_goal_writes_every_piece_and_reads_back_exactly(sg, seed):
@@ -167,7 +163,7 @@ def test_goal_writes_every_piece_and_reads_back_exactly(sg, seed):
     check_goal_layout(text, sg, X_REL_WORDS)
     assert ") (" not in text and max(_depths(text), default=0) <= 1, text
     got, room = read_goal(text)
-    assert _norm(got) == _truth(sg.target), text
+    assert reading_norm(got) == target_truth(sg.target), text
     assert room == sg.room, text
 
 
@@ -179,7 +175,7 @@ def test_nested_goal_and_every_attribute_state_and_room_form():
     texts = [X.render_goal_x(rng, Subgoal(0, t, room="music room")) for _ in range(300)]
     for text in texts:
         got, room = read_goal(text)
-        assert _norm(got) == _truth(t) and room == "music room", text
+        assert reading_norm(got) == target_truth(t) and room == "music room", text
         assert text.index("music room") < text.index("sofa") < text.index("drums") < text.index("shelves"), text
     for rx in (r"^the teal wool lamp", r"^the lamp of the teal and wool sort", r"^the lamp \(described as teal and wool\)",
                r"^the switched-on ", r"\(presently switched on\)", r", found switched on,", r"down in the music room",
