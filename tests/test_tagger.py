@@ -371,7 +371,7 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
 
 
 @pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u", "unseen_v",
-                                      "unseen_x"])
+                                      "unseen_x", "unseen_y"])
 def test_training_examples_read_no_held_out_template_set(held_out):
     with pytest.raises(UserError, match=f"'{held_out}' is not a training template set"):
         training_examples(Config(), 1, 0, ("seen", held_out))

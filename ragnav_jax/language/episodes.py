@@ -806,6 +806,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_s": ("phrasings_s", "s"), "unseen_t": ("phrasings_t", "t"),
                     "unseen_u": ("phrasings_u", "u"), "unseen_v": ("phrasings_v", "v"),
                     "unseen_x": ("phrasings_x", "x"),
+                    "unseen_y": ("phrasings_y", "y"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
