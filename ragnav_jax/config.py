@@ -563,6 +563,11 @@ class EvalConfig:
     # fitted with the tagger on seen-split houses, `ragnav fit-tagger`)
     tagger_clauses: bool = True  # a goal the tagger adds is what the rule parser reads in its own clause (its
     # attributes, room, relations, sensors), not the bare tagged phrase (language/tagger.py: reconcile)
+    sensor_reader: bool = True  # after the tagger and grounding, each goal's sensor comparison read again by the
+    # learned reader where it is sure: its direction turned, a missed superlative or bound added (language/sensor_reader.py)
+    sensor_reader_file: str = ""  # sensor_reader.npz (`ragnav fit-sensor-reader`; "" = ragnav_jax/data/sensor_reader.npz)
+    sensor_reader_conf: float = 0.0  # probability above which the reader's way overrides the parse (0 = the value
+    # fitted with the reader on seen-split houses)
     verifier_file: str = ""  # fitted.json with the verifier's thresholds ("" = ragnav_jax/data/fitted.json)
     verify_attribute_keep: float = 0.9  # close-range perception for the check: chance an attribute is said
     verify_confusion: float = 0.01  # ... and chance the object is named as a similar category
@@ -576,6 +581,8 @@ class EvalConfig:
         _check(self.reflections in ("auto", "serial", "batched"), "eval.reflections",
                "must be 'auto', 'serial' or 'batched'")
         _check(self.tagger_conf == 0.0 or 0.5 <= self.tagger_conf < 1.0, "eval.tagger_conf", "must be 0 or in [0.5, 1)")
+        _check(self.sensor_reader_conf == 0.0 or 0.5 <= self.sensor_reader_conf < 1.0, "eval.sensor_reader_conf",
+               "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",

@@ -4,6 +4,7 @@ the adapters, fitting on seen houses only, and the fitted file."""
 from __future__ import annotations
 
 import dataclasses
+import importlib
 import re
 
 import numpy as np
@@ -14,6 +15,7 @@ from hypothesis import strategies as st
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
 from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.sensor_reader import HELD_OUT
 from ragnav_jax.language.tagger import (
     BA,
     BT,
@@ -370,18 +372,23 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
     assert reconcile(text, sgs, probs, conf=0.9) == (sgs, (), ())
 
 
-@pytest.mark.parametrize("held_out", ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u", "unseen_v",
-                                      "unseen_x", "unseen_y"])
-def test_training_examples_read_no_held_out_template_set(held_out):
+@pytest.mark.parametrize("reader, held_out", [
+    *(("tagger", h) for h in ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u", "unseen_v",
+                              "unseen_x", "unseen_y"]),
+    *(("sensor_reader", h) for h in HELD_OUT)])
+def test_training_examples_read_no_held_out_template_set(reader, held_out):
+    examples = importlib.import_module(f"ragnav_jax.language.{reader}").training_examples
     with pytest.raises(UserError, match=f"'{held_out}' is not a training template set"):
-        training_examples(Config(), 1, 0, ("seen", held_out))
+        examples(Config(), 1, 0, ("seen", held_out))
 
 
-def test_training_examples_read_seen_houses_only():
+@pytest.mark.parametrize("reader", ["tagger", "sensor_reader"])
+def test_training_examples_read_seen_houses_only(reader):
+    examples = importlib.import_module(f"ragnav_jax.language.{reader}").training_examples
     cfg = Config()
     cfg = dataclasses.replace(cfg, world=dataclasses.replace(cfg.world, split="unseen"))
     with pytest.raises(UserError, match="seen split only"):
-        training_examples(cfg, 1, 0, ("seen",))
+        examples(cfg, 1, 0, ("seen",))
 
 
 def test_training_examples_are_labelled_and_deterministic():
@@ -480,7 +487,8 @@ def test_the_tagger_reads_alone_what_the_parser_cannot():
 
 
 def test_fitted_confidence_is_the_smallest_that_changes_at_most_the_allowed_share():
-    from ragnav_jax.language.tagger import CONF_GRID, fit_conf
+    from ragnav_jax.language.adapters import CONF_GRID
+    from ragnav_jax.language.tagger import fit_conf
 
     # a tagger sure of nothing but O: every parsed goal is a remark to it, at any confidence below p
     got = fit_conf(FakeTagger({}, p=0.97), Config(), 1, 5, ("seen",))

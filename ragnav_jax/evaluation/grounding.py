@@ -306,6 +306,42 @@ class MemoryGrounder:
         return kept
 
 
+class SensorReading:
+    """Each goal's sensor comparison read again by the learned reader (`language/sensor_reader.py: revise`) after
+    `inner` (the tagger and the memory grounder, whichever are on) has read and grounded the goals, so a remark
+    grounding drops is never given one ("the sampling points below may be visited" is no least-NDVI goal): a
+    `ground` hook of goal_items / prepare_batch. What `inner` dropped, added and reads alone passes through;
+    `revised[episode id]` keeps (before, after) of each goal it changed."""
+
+    def __init__(self, reader, conf: float, inner=None):
+        self.reader, self.conf, self.inner, self.revised = reader, conf, inner, {}
+
+    dropped = property(lambda self: getattr(self.inner, "dropped", {}))
+    added = property(lambda self: getattr(self.inner, "added", {}))
+
+    def _revise(self, ep, subgoals):
+        from ragnav_jax.language.sensor_reader import revise
+
+        if not subgoals:
+            return subgoals
+        pr, pw = self.reader.probs([sg.text for sg in subgoals])
+        known = getattr(self.inner, "vocab", {}).get(ep.scene, ())
+        out = tuple(revise(sg, a, b, self.conf, known) for sg, a, b in zip(subgoals, pr, pw))
+        changed = tuple((x.to_dict(), y.to_dict()) for x, y in zip(subgoals, out) if x != y)
+        if changed:
+            self.revised[ep.id] = changed
+        return out
+
+    def __call__(self, ep, subgoals):
+        return self._revise(ep, self.inner(ep, subgoals) if self.inner is not None else subgoals)
+
+    def read_unparsed(self, ep):
+        """What `inner` reads of an instruction the parser cannot (None where it reads nothing), read again."""
+        alone = getattr(self.inner, "read_unparsed", None)
+        got = alone(ep) if alone is not None else None
+        return self._revise(ep, got) if got else got
+
+
 class TaggedReading:
     """The parse reconciled with the instruction tagger (`language/tagger.py: reconcile`), then handed to
     `then` (the memory grounder) if any: a `ground` hook of goal_items / prepare_batch. The tagger reads
@@ -348,6 +384,8 @@ class TaggedReading:
         from ragnav_jax.language.parser import input_problem
 
         return None if input_problem(ep.instruction) else self(ep, ()) or None
+
+    vocab = property(lambda self: getattr(self.then, "vocab", {}))
 
     @property
     def dropped(self) -> dict:

@@ -18,10 +18,11 @@ import jax
 import numpy as np
 
 from ragnav_jax.config import Config
-from ragnav_jax.evaluation.grounding import MemoryGrounder, TaggedReading
+from ragnav_jax.evaluation.grounding import MemoryGrounder, SensorReading, TaggedReading
 from ragnav_jax.evaluation.methods import MethodSpec
 from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
 from ragnav_jax.language.episodes import Episode
+from ragnav_jax.language.sensor_reader import load_reader
 from ragnav_jax.language.tagger import load_tagger
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.types import MemoryBank
@@ -270,12 +271,16 @@ def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
 
 
 def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, verifier: Verifier | None):
-    """What turns a parse into the subgoals run (evaluation/grounding.py, the tagger), or None."""
+    """What turns a parse into the subgoals run (evaluation/grounding.py: the tagger, the memory grounder, then
+    the sensor reader), or None."""
     ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
         ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses)
+    if cfg.eval.sensor_reader and spec.reads:
+        reader = load_reader(cfg.eval.sensor_reader_file)
+        ground = SensorReading(reader, cfg.eval.sensor_reader_conf or reader.meta["revise"]["conf"], inner=ground)
     return ground
 
 

@@ -38,7 +38,8 @@ def cmd_parse(args, cfg) -> int:
 
 
 def _tagged(chain, cfg):
-    """The chain reconciled with the instruction tagger (as `eval.tagger` does), what changed on stderr."""
+    """The chain reconciled with the instruction tagger and its sensor comparisons read again by the sensor reader
+    (as `eval.tagger` and `eval.sensor_reader` do), what changed on stderr."""
     import dataclasses
 
     from ragnav_jax.language.tagger import BT, load_tagger, reconcile, spans, words
@@ -52,6 +53,16 @@ def _tagged(chain, cfg):
     subgoals, dropped, added = reconcile(chain.instruction, chain.subgoals, probs, conf, cfg.eval.tagger_clauses)
     print(f"ragnav: note: tagger (confidence {conf}): goal phrases {phrases}; dropped {list(dropped)}; "
           f"added {list(added)}", file=sys.stderr)
+    if cfg.eval.sensor_reader:
+        from ragnav_jax.language.sensor_reader import load_reader, revise
+
+        reader = load_reader(cfg.eval.sensor_reader_file)
+        rconf = cfg.eval.sensor_reader_conf or reader.meta["revise"]["conf"]
+        pr, pw = reader.probs([sg.text for sg in subgoals])
+        revised = tuple(revise(sg, a, b, rconf) for sg, a, b in zip(subgoals, pr, pw))
+        print(f"ragnav: note: sensor reader (confidence {rconf}): revised "
+              f"{[x.text for x, y in zip(subgoals, revised) if x != y]}", file=sys.stderr)
+        subgoals = revised
     return dataclasses.replace(chain, subgoals=subgoals, dependencies=derive_dependencies(subgoals, chain.order))
 
 
@@ -148,34 +159,43 @@ def cmd_check_parse(args, cfg) -> int:
     return 0 if ok / len(episodes) >= args.min_rate else 1
 
 
-def cmd_fit_tagger(args, cfg) -> int:
-    from ragnav_jax.language.tagger import (
-        TRAIN_SPLITS,
-        FitSettings,
-        InstructionTagger,
-        check_splits,
-        fit_conf,
-        fit_tagger,
-        save_tagger,
-    )
+def _fit_command(args, cfg, m, command: str, filename: str, fit, reader, conf_key: str, cfg_key: str) -> int:
+    """`ragnav fit-tagger` / `fit-sensor-reader`: fit a learned reader of module m on seen-split houses, then its
+    confidence on other seen-split houses (m.fit_conf), and write OUT/<filename>.npz and .json."""
+    from ragnav_jax.language.adapters import save_adapters
     from ragnav_jax.runs import init_run, refuse_overwrite
 
     out = Path(args.out)
-    splits = tuple(s.strip() for s in args.splits.split(",")) if args.splits else TRAIN_SPLITS
-    check_splits(splits)  # before the run folder is made
-    refuse_overwrite([out / "tagger.npz"], args.force)
-    init_run(out, cfg, "fit-tagger")
-    settings = FitSettings(scenes=args.scenes, seed=args.seed, lora=args.lora, epochs=args.epochs)
-    trained, meta = fit_tagger(cfg, settings, splits, progress=not args.quiet)
-    # the confidence, on other seen-split houses than the training ones
-    meta["reconcile"] = fit_conf(InstructionTagger(trained, meta), cfg, args.scenes, args.seed + 1, splits)
-    path = save_tagger(trained, meta, out / "tagger.npz")
-    write_json(out / "tagger.json", meta)
-    print(f"tagger fitted on {meta['fitted_on']['examples']} examples (+{meta['fitted_on']['augmented']} augmented) of "
-          f"{len(splits)} template sets over {args.scenes} seen-split houses, final loss {meta['final_loss']:.4f}, "
-          f"confidence {meta['reconcile']['conf']} -> {path};"
-          f" use with eval.tagger_file={path}")
+    splits = tuple(s.strip() for s in args.splits.split(",")) if args.splits else None
+    if splits is not None:
+        m.check_splits(splits)  # before the run folder is made
+    refuse_overwrite([out / f"{filename}.npz"], args.force)
+    init_run(out, cfg, command)
+    settings = m.FitSettings(scenes=args.scenes, seed=args.seed, lora=args.lora, epochs=args.epochs)
+    trained, meta = fit(cfg, settings, *([splits] if splits else []), progress=not args.quiet)
+    meta[conf_key] = m.fit_conf(reader(trained, meta), cfg, args.scenes, args.seed + 1,
+                                tuple(meta["fitted_on"]["template_sets"]))
+    path = save_adapters(trained, meta, out / f"{filename}.npz")
+    write_json(out / f"{filename}.json", meta)
+    on = meta["fitted_on"]
+    print(f"{command.removeprefix('fit-')} fitted on {on['examples']} examples (+{on.get('augmented', 0)} augmented) of "
+          f"{len(on['template_sets'])} template sets over {args.scenes} seen-split houses, final loss "
+          f"{meta['final_loss']:.4f}, confidence {meta[conf_key]['conf']} -> {path}; use with {cfg_key}={path}")
     return 0
+
+
+def cmd_fit_tagger(args, cfg) -> int:
+    from ragnav_jax.language import tagger as m
+
+    return _fit_command(args, cfg, m, "fit-tagger", "tagger", m.fit_tagger, m.InstructionTagger, "reconcile",
+                        "eval.tagger_file")
+
+
+def cmd_fit_sensor_reader(args, cfg) -> int:
+    from ragnav_jax.language import sensor_reader as m
+
+    return _fit_command(args, cfg, m, "fit-sensor-reader", "sensor_reader", m.fit_reader, m.SensorReader, "revise",
+                        "eval.sensor_reader_file")
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
@@ -192,8 +212,9 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--json", action="store_true", help="print only the JSON (one line)")
     p.add_argument("--llm", action="store_true", help="use the LLM endpoint of the config (llm.base_url), with fallback")
     p.add_argument("--tagger", action="store_true",
-                   help="reconcile the parse with the instruction tagger, as `ragnav eval` does by default "
-                        "(eval.tagger, eval.tagger_file; without the house's memory, which eval also grounds in)")
+                   help="reconcile the parse with the instruction tagger and read its sensor comparisons again with "
+                        "the sensor reader, as `ragnav eval` does by default (eval.tagger, eval.sensor_reader; "
+                        "without the house's memory, which eval also grounds in)")
     p.set_defaults(func=cmd_parse)
 
     p = sub.add_parser("episodes", parents=[common], help="generate multi-goal episodes for a scene set")
@@ -211,13 +232,17 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--min-rate", type=unit_float, default=0.99, help="exit 1 below this agreement")
     p.set_defaults(func=cmd_check_parse)
 
-    p = sub.add_parser("fit-tagger", parents=[common],
-                       help="fit the instruction tagger (goal phrases) on seen-split houses (writes OUT/tagger.npz)")
-    p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--scenes", type=positive_int, default=8, help="seen-split training houses (default 8)")
-    p.add_argument("--seed", type=nonneg_int, default=4242, help="seed of houses, episodes and training (default 4242)")
-    p.add_argument("--lora", type=positive_int, default=8, help="adapter rank (default 8)")
-    p.add_argument("--epochs", type=positive_int, default=3, help="passes over the examples (default 3)")
-    p.add_argument("--splits", help="template sets to learn from, comma-separated (default: seen and unseen_dev..8)")
-    p.add_argument("--force", action="store_true", help="overwrite an earlier OUT/tagger.npz")
-    p.set_defaults(func=cmd_fit_tagger)
+    for name, what, file, seed, default, func in (
+            ("fit-tagger", "the instruction tagger (goal phrases)", "tagger", 4242, "the seen and development sets",
+             cmd_fit_tagger),
+            ("fit-sensor-reader", "the learned reader of sensor comparisons", "sensor_reader", 5151,
+             "every set but the held-out one", cmd_fit_sensor_reader)):
+        p = sub.add_parser(name, parents=[common], help=f"fit {what} on seen-split houses (writes OUT/{file}.npz)")
+        p.add_argument("--out", required=True, help="output folder")
+        p.add_argument("--scenes", type=positive_int, default=8, help="seen-split training houses (default 8)")
+        p.add_argument("--seed", type=nonneg_int, default=seed, help=f"seed of houses, episodes and training (default {seed})")
+        p.add_argument("--lora", type=positive_int, default=8, help="adapter rank (default 8)")
+        p.add_argument("--epochs", type=positive_int, default=3, help="passes over the examples (default 3)")
+        p.add_argument("--splits", help=f"template sets to learn from, comma-separated (default: {default})")
+        p.add_argument("--force", action="store_true", help=f"overwrite an earlier OUT/{file}.npz")
+        p.set_defaults(func=func)

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import json
 import re
 from collections.abc import Collection, Sequence
 from pathlib import Path
@@ -31,9 +30,18 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 from flax import linen as nn
-from flax import traverse_util
 
 from ragnav_jax.errors import UserError
+from ragnav_jax.language.adapters import (
+    data_path,
+    encoder_params,
+    fitted_conf,
+    join,
+    load_adapters,
+    save_adapters,
+    split_init,
+    train,
+)
 from ragnav_jax.memory.encoder import BertShape, MiniLM, MiniLMEmbedder, _bucket
 
 TAGS = ("O", "B-T", "I-T", "B-A", "I-A")
@@ -210,16 +218,6 @@ def _is_trained(path: tuple[str, ...]) -> bool:
     return path[0] == "tag" or "_lora_" in path[-2]
 
 
-def split_params(params: dict) -> tuple[dict, dict]:
-    """(trained, frozen) flat dicts of the tagger's {'params': ...} tree: adapters and head, and the rest."""
-    flat = traverse_util.flatten_dict(params["params"])
-    return ({k: v for k, v in flat.items() if _is_trained(k)}, {k: v for k, v in flat.items() if not _is_trained(k)})
-
-
-def join_params(trained: dict, frozen: dict) -> dict:
-    return {"params": traverse_util.unflatten_dict({**frozen, **trained})}
-
-
 def encode_words(tokenizer, wordlists: Sequence[Sequence[str]]) -> tuple[np.ndarray, np.ndarray]:
     """(ids (n, MAX_TOKENS) int32, first (n, MAX_TOKENS) int32) of pre-split word lists: `first` holds, at
     the first token of each word, the word's index, and -1 at every other token."""
@@ -277,53 +275,29 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
     model = Tagger(base.shape, settings.lora)
     key = jax.random.PRNGKey(settings.seed)
     key, k0 = jax.random.split(key)
-    init = model.init(k0, jnp.asarray(ids[:2, :32]))
-    trained, _ = split_params(init)
-    init_flat = traverse_util.flatten_dict(init["params"])
-    pre = {("enc", *k): v for k, v in traverse_util.flatten_dict(base.params["params"]).items()}
-    frozen = {k: pre[k] for k in init_flat if not _is_trained(k)}
-    steps = settings.epochs * (len(ids) // settings.batch)
-    sched = optax.warmup_cosine_decay_schedule(0.0, settings.lr, max(1, steps // 10), max(1, steps))
-    opt = optax.adamw(sched, weight_decay=0.01)
-    state = opt.init(trained)
+    trained, frozen = split_init(model, base, k0, _is_trained, jnp.asarray(ids[:2, :32]))
 
     def loss_fn(tr, x, t, k):
-        logits = model.apply(join_params(tr, frozen), x, True, rngs={"dropout": k})
+        logits = model.apply(join(tr, frozen), x, True, rngs={"dropout": k})
         m = t >= 0
         ce = optax.softmax_cross_entropy_with_integer_labels(logits, jnp.maximum(t, 0))
         return (ce * m).sum() / jnp.maximum(m.sum(), 1)
 
-    @jax.jit
-    def step(tr, st, x, t, k):
-        loss, g = jax.value_and_grad(loss_fn)(tr, x, t, k)
-        upd, st = opt.update(g, st, tr)
-        return optax.apply_updates(tr, upd), st, loss
-
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
-
-        bar = tqdm(total=steps, desc="fit-tagger", unit="step")
-    losses = []
-    for _ in range(settings.epochs):
+    def batches():
         order = rng.permutation(len(ids))
         for s in range(0, len(order) - settings.batch + 1, settings.batch):
             b = order[s : s + settings.batch]
             L = _length(ids[b])
-            key, k = jax.random.split(key)
-            trained, state, loss = step(trained, state, jnp.asarray(ids[b, :L]), jnp.asarray(y[b, :L]), k)
-            losses.append(float(loss))
-            if bar is not None:
-                bar.update(1)
-                bar.set_postfix(loss=f"{losses[-1]:.4f}")
-    if bar is not None:
-        bar.close()
+            yield ids[b, :L], y[b, :L]
+
+    steps = settings.epochs * (len(ids) // settings.batch)
+    trained, losses = train(loss_fn, trained, batches, steps, settings.lr, key, "fit-tagger", progress)
     meta = {"format": TAGGER_FORMAT, "lora": settings.lora, "tags": list(TAGS),
             "fitted_on": {"world_split": "seen", "template_sets": list(splits), "scenes": settings.scenes,
                           "seed": settings.seed, "examples": len(examples), "augmented": len(ids) - len(examples)},
             "settings": dataclasses.asdict(settings), "final_loss": float(np.mean(losses[-50:])) if losses else None,
             "backend": jax.default_backend()}
-    return jax.device_get(trained), meta
+    return trained, meta
 
 
 def _pad_tags(tags: Sequence[Sequence[int]]) -> np.ndarray:
@@ -338,35 +312,13 @@ def _pad_tags(tags: Sequence[Sequence[int]]) -> np.ndarray:
 # The fitted file and inference
 
 
-def default_tagger_path() -> Path:
-    from importlib import resources
-
-    return Path(str(resources.files("ragnav_jax").joinpath("data").joinpath("tagger.npz")))
-
-
 def save_tagger(trained: dict, meta: dict, path: str | Path) -> Path:
     """The adapters and head as float32 arrays named by their parameter path, with the metadata as JSON."""
-    from ragnav_jax.io import atomic_path
-
-    arrays = {"/".join(k): np.asarray(v, np.float32) for k, v in trained.items()}
-    path = Path(path)
-    with atomic_path(path) as tmp:
-        with open(tmp, "wb") as f:
-            np.savez(f, __meta__=np.frombuffer(json.dumps(meta, sort_keys=True).encode(), np.uint8), **arrays)
-    return path
+    return save_adapters(trained, meta, path)
 
 
 def load_tagger_file(path: str | Path) -> tuple[dict, dict]:
-    path = Path(path)
-    try:
-        with np.load(path) as z:
-            meta = json.loads(bytes(z["__meta__"]).decode())
-            trained = {tuple(k.split("/")): jnp.asarray(z[k]) for k in z.files if k != "__meta__"}
-    except (OSError, ValueError, KeyError) as e:
-        raise UserError(f"{path}: not a tagger file ({e.__class__.__name__}: {e})") from None
-    if meta.get("format") != TAGGER_FORMAT:
-        raise UserError(f"{path}: format {meta.get('format')!r} is not {TAGGER_FORMAT}")
-    return trained, meta
+    return load_adapters(path, TAGGER_FORMAT, "tagger")
 
 
 @functools.lru_cache(maxsize=2)
@@ -382,14 +334,13 @@ class InstructionTagger:
         self.base = MiniLMEmbedder()
         self.meta = meta
         self.model = Tagger(self.base.shape, int(meta["lora"]))
-        pre = {("enc", *k): v for k, v in traverse_util.flatten_dict(self.base.params["params"]).items()}
-        self.params = join_params(trained, pre)
+        self.params = join(trained, encoder_params(self.base))
         self.batch_size = batch_size
         self._apply = jax.jit(lambda p, x: jax.nn.softmax(self.model.apply(p, x), -1))
 
     @classmethod
     def load(cls, path: str | Path | None = None) -> InstructionTagger:
-        return cls(*load_tagger_file(path or default_tagger_path()))
+        return cls(*load_tagger_file(path or data_path("tagger.npz")))
 
     def word_probs(self, texts: Sequence[str]) -> list[np.ndarray]:
         """Per text, (n_words, len(TAGS)) tag probabilities of `words(text)` (words past the token limit: O)."""
@@ -411,13 +362,8 @@ class InstructionTagger:
 # ----------------------------------------------------------------------------------------------------
 # Reconciling the parse with the tagger
 
-CONF_GRID = (0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
-CONF_CHANGES = 0.005  # share of correct parses the fitted confidence may change (set before any unseen-split
-# measurement; a stricter 0 chosen after seeing unseen-house results was reverted)
-
-
 def fit_conf(tagger: InstructionTagger, cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS) -> dict:
-    """The smallest confidence of CONF_GRID at which `reconcile` changes at most CONF_CHANGES of the parses
+    """The smallest confidence of adapters.CONF_GRID at which `reconcile` changes at most CONF_CHANGES of the parses
     that read the true goals, on `scenes` seen-split houses of `seed` (not the training houses), episodes of
     the template sets `splits`; with the changes at every grid value."""
     from ragnav_jax.evaluation.fitting import _seen_scenes
@@ -437,9 +383,9 @@ def fit_conf(tagger: InstructionTagger, cfg, scenes: int, seed: int, splits: Seq
                 texts.append(g.episode.instruction)
                 parses.append(sgs)
     probs = tagger.word_probs(texts)
-    changes = {c: sum(reconcile(t, sg, p, c)[0] != tuple(sg) for t, sg, p in zip(texts, parses, probs)) for c in CONF_GRID}
-    conf = next((c for c in CONF_GRID if changes[c] <= CONF_CHANGES * len(texts)), CONF_GRID[-1])
-    return {"conf": conf, "parses": len(texts), "changes": {str(c): n for c, n in changes.items()},
+    conf, changes = fitted_conf(
+        lambda c: sum(reconcile(t, sg, p, c)[0] != tuple(sg) for t, sg, p in zip(texts, parses, probs)), len(texts))
+    return {"conf": conf, "parses": len(texts), "changes": changes,
             "fitted_on": {"world_split": "seen", "scenes": scenes, "seed": seed, "template_sets": list(splits)}}
 
 
