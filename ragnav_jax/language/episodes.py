@@ -807,6 +807,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_u": ("phrasings_u", "u"), "unseen_v": ("phrasings_v", "v"),
                     "unseen_x": ("phrasings_x", "x"),
                     "unseen_y": ("phrasings_y", "y"),
+                    "unseen_z": ("phrasings_z", "z"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
