@@ -3,7 +3,7 @@
     .venv/bin/python experiments/sensor_reader_check.py --reader runs/sensor-reader/dev12/sensor_reader.npz \
         --splits unseen,unseen_q,...,unseen_x,seen,unseen_dev5 --out DIR [--houses 3 --seed 777]
 
-Goal texts come from `sensor_reader.training_examples` over `--houses` seen-split houses of `--seed` (not the
+Goal texts come from `sensor_reader.goal_examples` over `--houses` seen-split houses of `--seed` (not the
 reader's training or confidence houses): every goal of each set's episodes, and each goal without a comparison
 written again with a random one by the set's own templates. Each text is parsed alone ("Go to <text>") and
 counted right where its first comparison has the truth's reading and way (none, above, below, about, most,
@@ -21,7 +21,7 @@ from pathlib import Path
 
 from ragnav_jax.config import load_config
 from ragnav_jax.language.parser import parse_instruction
-from ragnav_jax.language.sensor_reader import NONE, SensorReader, label, load_reader_file, revise, training_examples
+from ragnav_jax.language.sensor_reader import NONE, SensorReader, label, load_reader_file, revise, goal_examples
 from ragnav_jax.language.types import ParseError, Subgoal, Target
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -54,7 +54,7 @@ def main() -> int:
     learnt = set(meta["fitted_on"]["template_sets"])
     rows = []
     for split in args.splits.split(","):
-        ex = training_examples(cfg, args.houses, args.seed, (split,))
+        ex = goal_examples(cfg, args.houses, args.seed, (split,))
         pr, pw = reader.probs([t for t, _, _ in ex])
         c = Counter()
         for (text, r, w), a, b in zip(ex, pr, pw):

@@ -374,7 +374,7 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
 
 @pytest.mark.parametrize("reader, held_out", [
     *(("tagger", h) for h in ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u", "unseen_v",
-                              "unseen_x", "unseen_y"]),
+                              "unseen_x", "unseen_y", "unseen_z"]),
     *(("sensor_reader", h) for h in HELD_OUT)])
 def test_training_examples_read_no_held_out_template_set(reader, held_out):
     examples = importlib.import_module(f"ragnav_jax.language.{reader}").training_examples

@@ -59,8 +59,9 @@ WAY_OF = {"gt": ABOVE, "ge": ABOVE, "lt": BELOW, "le": BELOW, "approx": APPROX, 
 READER_FORMAT = "ragnav-sensor-reader/1"
 MAX_TOKENS = 96
 LENGTHS = (32, 64, MAX_TOKENS)
-# the one template set no reader may learn from: written before this reader was measured on it
-HELD_OUT = ("unseen_y",)
+# the template set no reader may learn from: the next fresh one, written before any reader is measured on it (the
+# shipped reader was fitted before Y, `unseen_y`, was run, with Y held out: its metadata lists what it read)
+HELD_OUT = ("unseen_z",)
 # values a random comparison is written with in augmented examples, per reading
 _VALUES = {"temperature_c": (-20, -18, -4, 0, 4, 18, 21, 22, 25, 30, 38, 40, 45, 60, 90, 150, 180, 220),
            "humidity_pct": (15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90),
@@ -95,11 +96,16 @@ def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] | None 
     """(goal text, reading index, way index) of every goal of episodes written with each template set over
     `scenes` seen-split houses of `seed`; with `rewrite`, that share of the goals without a comparison written
     again with a random one (`_VALUES`) by the set's own goal and sensor templates."""
+    splits = tuple(splits) if splits is not None else train_splits()
+    check_splits(splits)
+    return goal_examples(cfg, scenes, seed, splits, rewrite)
+
+
+def goal_examples(cfg, scenes: int, seed: int, splits: Sequence[str], rewrite: float = 1.0) -> list[tuple[str, int, int]]:
+    """`training_examples` of any template sets, held-out ones included (to measure a reader, never to fit one)."""
     from ragnav_jax.evaluation.fitting import _seen_scenes
     from ragnav_jax.language.episodes import _renderer, generate_episodes
 
-    splits = tuple(splits) if splits is not None else train_splits()
-    check_splits(splits)
     houses = _seen_scenes(cfg, scenes, seed)
     rng = np.random.default_rng(seed)
     out = []

@@ -10,7 +10,7 @@ labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never the held-out `unseen` or `unseen_q` to `unseen_y`),
+the parser rounds were developed against; never the held-out `unseen` or `unseen_q` to `unseen_z`),
 labelled from the generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
@@ -53,7 +53,7 @@ ADD_CONF = 0.5  # a tagged phrase the parse missed is added when its every word 
 LINE_BREAK = "|"  # the word a line break is read as: lists and headings are laid out in lines
 # the template sets a tagger may learn from: the seen templates and the development sets, never the held-out
 # `unseen` (P), `unseen_q` (Q), `unseen_r` (R), `unseen_s` (S), `unseen_t` (T), `unseen_u` (U), `unseen_v` (V)
-# or `unseen_x` (X), or `unseen_y` (Y)
+# `unseen_x` (X), `unseen_y` (Y) or `unseen_z` (Z)
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                 "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
 
