@@ -21,7 +21,7 @@ from pathlib import Path
 
 from ragnav_jax.config import load_config
 from ragnav_jax.language.parser import parse_instruction
-from ragnav_jax.language.sensor_reader import NONE, SensorReader, label, load_reader_file, revise, goal_examples
+from ragnav_jax.language.sensor_reader import NONE, SensorReader, goal_examples, label, load_reader_file, revise
 from ragnav_jax.language.types import ParseError, Subgoal, Target
 
 ROOT = Path(__file__).resolve().parents[1]
