@@ -178,7 +178,8 @@ def _fit_command(args, cfg, m, command: str, filename: str, fit, reader, conf_ke
     path = save_adapters(trained, meta, out / f"{filename}.npz")
     write_json(out / f"{filename}.json", meta)
     on = meta["fitted_on"]
-    print(f"{command.removeprefix('fit-')} fitted on {on['examples']} examples (+{on.get('augmented', 0)} augmented) of "
+    more = f" (+{on['augmented']} augmented)" if "augmented" in on else ""
+    print(f"{command.removeprefix('fit-')} fitted on {on['examples']} examples{more} of "
           f"{len(on['template_sets'])} template sets over {args.scenes} seen-split houses, final loss "
           f"{meta['final_loss']:.4f}, confidence {meta[conf_key]['conf']} -> {path}; use with {cfg_key}={path}")
     return 0
