@@ -802,6 +802,9 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_dev7": ("phrasings_dev7", "dev7"), "unseen_dev8": ("phrasings_dev8", "dev8"),
                     "unseen_dev9": ("phrasings_dev9", "dev9"), "unseen_dev10": ("phrasings_dev10", "dev10"),
                     "unseen_dev11": ("phrasings_dev11", "dev11"), "unseen_dev12": ("phrasings_dev12", "dev12"),
+                    # written to teach the learned readers more authors (round 22); no rule was written on them
+                    "unseen_train1": ("phrasings_train1", "train1"), "unseen_train2": ("phrasings_train2", "train2"),
+                    "unseen_train3": ("phrasings_train3", "train3"), "unseen_train4": ("phrasings_train4", "train4"),
                     "unseen_q": ("phrasings_q", "q"), "unseen_r": ("phrasings_r", "r"),
                     "unseen_s": ("phrasings_s", "s"), "unseen_t": ("phrasings_t", "t"),
                     "unseen_u": ("phrasings_u", "u"), "unseen_v": ("phrasings_v", "v"),
