@@ -175,7 +175,7 @@ def test_sensor_reading_revises_what_grounding_keeps():
     out = hook(ep, parse_instruction(ep.instruction).subgoals)
     assert [sg.target.head for sg in out] == ["tool"] and out[0].sensors[0].comparator == "max"
     assert reader.calls == [["the toastiest tool"]]  # the remark grounding dropped is never read
-    assert hook.revised["e"][0][1]["target"]["head"] == "tool"
+    assert hook.revised["e"] == ("the toastiest tool: toastiest tool -> tool, temperature_c max",)
     assert hook.dropped == {"e": ("sampling points",)} and hook.added == {"e": ("tool",)}
     got = hook.read_unparsed(ep)  # a name the house uses keeps its first word
     assert got[0].target.head == "chest freezer" and got[0].sensors[0].comparator == "max"

@@ -306,12 +306,18 @@ class MemoryGrounder:
         return kept
 
 
+def _comparison(sg: Subgoal) -> str:
+    """A goal's sensor constraints and name as the rows show them ("tool, temperature_c max")."""
+    parts = [" ".join(str(x) for x in (c.reading, c.comparator, c.value) if x is not None) for c in sg.sensors]
+    return ", ".join([sg.target.head, *parts])
+
+
 class SensorReading:
     """Each goal's sensor comparison read again by the learned reader (`language/sensor_reader.py: revise`) after
     `inner` (the tagger and the memory grounder, whichever are on) has read and grounded the goals, so a remark
     grounding drops is never given one ("the sampling points below may be visited" is no least-NDVI goal): a
     `ground` hook of goal_items / prepare_batch. What `inner` dropped, added and reads alone passes through;
-    `revised[episode id]` keeps (before, after) of each goal it changed."""
+    `revised[episode id]` names each goal it changed, "text: before -> after" (the rows' `revised`)."""
 
     def __init__(self, reader, conf: float, inner=None):
         self.reader, self.conf, self.inner, self.revised = reader, conf, inner, {}
@@ -327,7 +333,7 @@ class SensorReading:
         pr, pw = self.reader.probs([sg.text for sg in subgoals])
         known = getattr(self.inner, "vocab", {}).get(ep.scene, ())
         out = tuple(revise(sg, a, b, self.conf, known) for sg, a, b in zip(subgoals, pr, pw))
-        changed = tuple((x.to_dict(), y.to_dict()) for x, y in zip(subgoals, out) if x != y)
+        changed = tuple(f"{x.text}: {_comparison(x)} -> {_comparison(y)}" for x, y in zip(subgoals, out) if x != y)
         if changed:
             self.revised[ep.id] = changed
         return out

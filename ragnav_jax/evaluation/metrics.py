@@ -136,6 +136,7 @@ def episode_row(st, loop, oracle_length: float, cands, cfg, method: str) -> dict
         "rejected_candidates": int(sum(st.rejected)), "max_penetration_m": round(st.penetration, 4),
         "reason": reason, "ungrounded": list(cands.ungrounded.get(ep.id, ())),
         "tagged": list(cands.tagged.get(ep.id, ())),
+        "revised": list(cands.revised.get(ep.id, ())),
         **({"legs": st.legs} if st.legs else {}),
     }
 

@@ -62,6 +62,8 @@ class Candidates:
     ungrounded: dict = dataclasses.field(default_factory=dict)  # episode id -> parsed goal phrases naming nothing
     # the memory knows, dropped before retrieval (evaluation/grounding.py), or remarks the tagger dropped
     tagged: dict = dataclasses.field(default_factory=dict)  # episode id -> goal phrases the tagger added (eval.tagger)
+    revised: dict = dataclasses.field(default_factory=dict)  # episode id -> goals whose sensor comparison the sensor
+    # reader changed, each "text: before -> after" (eval.sensor_reader)
 
 
 @jax.jit
@@ -309,4 +311,4 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
     scores = [[r.score.get((ep.id, kk), [None] * len(c)) for kk, c in enumerate(per_ep[ep.id])] for ep in episodes]
     return Candidates([subgoals[ep.id] for ep in episodes], [per_ep[ep.id] for ep in episodes], r.timing,
                       [est_ep[ep.id] for ep in episodes], top, scores, ground.dropped if ground else {},
-                      getattr(ground, "added", {}))
+                      getattr(ground, "added", {}), getattr(ground, "revised", {}))
