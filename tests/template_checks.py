@@ -156,3 +156,15 @@ def reading_norm(got: dict) -> dict:
     """A reading with its states sorted (their order in the sentence is free)."""
     return {"head": got["head"], "attrs": got["attrs"], "states": sorted(got["states"]),
             "relations": [(k, reading_norm(a)) for k, a in got["relations"]]}
+
+
+def depths(text: str) -> list[int]:
+    """Per character of text, how many brackets are open there (a bracket's own characters count inside it)."""
+    out, d = [], 0
+    for ch in text:
+        if ch == "(":
+            d += 1
+        out.append(d)
+        if ch == ")":
+            d -= 1
+    return out

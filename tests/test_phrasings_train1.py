@@ -24,6 +24,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.config import EPISODE_SPLITS
@@ -87,17 +90,6 @@ def test_same_seed_same_text(sgs, c, seed, strict):
 
 # ----------------------------------------------------------------------------------------------------
 # A reader of T1's goals
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _relations_at_top(text: str) -> list[tuple[int, int, str]]:

@@ -24,6 +24,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.config import EPISODE_SPLITS
@@ -69,17 +72,6 @@ for _p, _t in REL_PHRASES.items():
 _ROOM_RX = re.compile(r"\b(?:in the (?:well-appointed |light-filled )?|within the |inside the )("
                       + "|".join(sorted(ROOMS, key=len, reverse=True)) + r")\b")
 _LIST = re.compile(r" and | n ")
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _relations_at_top(text: str) -> list[tuple[int, int, str]]:

@@ -25,6 +25,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.config import EPISODE_SPLITS
@@ -91,17 +94,6 @@ _LONGEST = sorted(REL_PHRASES, key=len, reverse=True)
 REL_WORDS: dict[str, tuple[str, ...]] = {}
 for _p, _t in REL_PHRASES.items():
     REL_WORDS[_t] = (*REL_WORDS.get(_t, ()), _p)
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _top_relations(text: str) -> list[tuple[int, int, str]]:

@@ -24,6 +24,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.language import phrasings_v as V
@@ -68,17 +71,6 @@ _BY_LENGTH = sorted(V_REL_PHRASES, key=len, reverse=True)
 
 # ----------------------------------------------------------------------------------------------------
 # A reader of V's goals: head, attributes, states, room and relations, nested
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _relations_at_top(text: str) -> list[tuple[int, int, str]]:

@@ -24,6 +24,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.language import phrasings_y as Y
@@ -60,17 +63,6 @@ Y_CHECK_WORDS = {t: tuple(" ".join(re.sub(r"[^a-z0-9\-'.%°]+", " ", w).split())
 
 # ----------------------------------------------------------------------------------------------------
 # A reader of Y's goals
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _relations_at_top(text: str) -> list[tuple[int, int, str]]:

@@ -25,6 +25,9 @@ from template_checks import (
     spoken_numbers,
     target_truth,
 )
+from template_checks import (
+    depths as _depths,
+)
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
 from ragnav_jax.language import phrasings_z as Z
@@ -57,17 +60,6 @@ for _p, _t in Z_REL_PHRASES.items():
 
 # ----------------------------------------------------------------------------------------------------
 # A reader of Z's goals
-
-
-def _depths(text: str) -> list[int]:
-    out, d = [], 0
-    for ch in text:
-        if ch == "(":
-            d += 1
-        out.append(d)
-        if ch == ")":
-            d -= 1
-    return out
 
 
 def _relations_at_top(text: str) -> list[tuple[int, int, str]]:

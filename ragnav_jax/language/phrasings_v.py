@@ -68,6 +68,8 @@ import re
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.template_text import attributes_and_states, number_words
+from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
@@ -79,47 +81,8 @@ _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eigh
 _DIGIT_WORDS = ("nought", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
 
 
-def number_words(n: int) -> str:
-    """A whole number in words: 'minus eighteen', 'forty-two', 'three hundred and five'."""
-    if n < 0:
-        return "minus " + number_words(-n)
-    if n < 20:
-        return _ONES[n]
-    if n < 100:
-        return _TENS[n // 10] + ("-" + _ONES[n % 10] if n % 10 else "")
-    if n < 1000:
-        rest = n % 100
-        return _ONES[n // 100] + " hundred" + (" and " + number_words(rest) if rest else "")
-    return str(n)
-
-
-def attributes_and_states(t: Target) -> tuple[list[str], list[str]]:
-    """(attributes the target's phrase writes before the noun, in order; every other attribute, a state such as
-    'switched on', 'open' or 'empty')."""
-    if not t.phrase.endswith(t.head):
-        return list(t.attributes), []
-    rest = t.phrase[: len(t.phrase) - len(t.head)].strip()
-    pre, states = [], []
-    for a in t.attributes:
-        if rest and (rest == a or rest.startswith(a + " ")):
-            pre.append(a)
-            rest = rest[len(a):].strip()
-        else:
-            states.append(a)
-    return pre, states
-
-
 def _hyphen(states: list[str]) -> str:
     return " ".join(s.replace(" ", "-") for s in states)
-
-
-def _tidy(s: str) -> str:
-    s = " ".join(s.split())
-    for a, b in ((",,", ","), (", ,", ","), (", (", " ("), (",)", ")")):
-        s = s.replace(a, b)
-    while s.endswith(","):
-        s = s[:-1].rstrip()
-    return s
 
 
 # ----------------------------------------------------------------------------------------------------

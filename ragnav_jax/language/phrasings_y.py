@@ -69,6 +69,9 @@ import re
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.template_text import attributes_and_states, number_words
+from ragnav_jax.language.template_text import listed as _listed
+from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
@@ -79,47 +82,8 @@ _ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight",
 _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
 
 
-def number_words(n: int) -> str:
-    """A whole number in words: 'minus four', 'sixty-five', 'three hundred and five'."""
-    if n < 0:
-        return "minus " + number_words(-n)
-    if n < 20:
-        return _ONES[n]
-    if n < 100:
-        return _TENS[n // 10] + ("-" + _ONES[n % 10] if n % 10 else "")
-    if n < 1000:
-        rest = n % 100
-        return _ONES[n // 100] + " hundred" + (" and " + number_words(rest) if rest else "")
-    return str(n)
-
-
-def attributes_and_states(t: Target) -> tuple[list[str], list[str]]:
-    """(attributes the target's phrase writes before the noun, in order; every other attribute, a state such as
-    'switched on', 'open' or 'empty')."""
-    if not t.phrase.endswith(t.head):
-        return list(t.attributes), []
-    rest = t.phrase[: len(t.phrase) - len(t.head)].strip()
-    pre, states = [], []
-    for a in t.attributes:
-        if rest and (rest == a or rest.startswith(a + " ")):
-            pre.append(a)
-            rest = rest[len(a):].strip()
-        else:
-            states.append(a)
-    return pre, states
-
-
 def _hyphen(states: list[str]) -> str:
     return " ".join(s.replace(" ", "-") for s in states)
-
-
-def _tidy(s: str) -> str:
-    s = " ".join(s.split())
-    for a, b in ((",,", ","), (", ,", ","), (", (", " ("), (",)", ")")):
-        s = s.replace(a, b)
-    while s.endswith(","):
-        s = s[:-1].rstrip()
-    return s
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -394,15 +358,6 @@ def _cap(s: str) -> str:
 
 def _sep(res: list[str]) -> str:
     return ";" if any("," in r for r in res) else ","
-
-
-def _listed(rng, res: list[str]) -> str:
-    """Goals in a running sentence: commas, or semicolons where a goal has commas of its own (two goals: 'and')."""
-    if len(res) == 2:
-        return f"{res[0]} and {res[1]}"
-    if any("," in r for r in res):
-        return "; ".join(res[:-1]) + "; and " + res[-1]
-    return ", ".join(res[:-1]) + _pick(rng, (" and ", ", and ")) + res[-1]
 
 
 _SHOWS = ("Hickstead", "the County Show", "Olympia", "the Royal Highland", "Badminton Park")

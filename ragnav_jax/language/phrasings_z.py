@@ -69,6 +69,9 @@ import re
 import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
+from ragnav_jax.language.template_text import attributes_and_states
+from ragnav_jax.language.template_text import listed as _listed
+from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
@@ -94,37 +97,12 @@ def number_words(n: int) -> str:
     return str(n)
 
 
-def attributes_and_states(t: Target) -> tuple[list[str], list[str]]:
-    """(attributes the target's phrase writes before the noun, in order; every other attribute, a state such as
-    'switched on', 'open' or 'empty')."""
-    if not t.phrase.endswith(t.head):
-        return list(t.attributes), []
-    rest = t.phrase[: len(t.phrase) - len(t.head)].strip()
-    pre, states = [], []
-    for a in t.attributes:
-        if rest and (rest == a or rest.startswith(a + " ")):
-            pre.append(a)
-            rest = rest[len(a):].strip()
-        else:
-            states.append(a)
-    return pre, states
-
-
 def _hyphen(states: list[str]) -> str:
     return " ".join(s.replace(" ", "-") for s in states)
 
 
 def _article(word: str) -> str:
     return "an" if word[:1].lower() in "aeiou" else "a"
-
-
-def _tidy(s: str) -> str:
-    s = " ".join(s.split())
-    for a, b in ((",,", ","), (", ,", ","), (", (", " ("), (",)", ")")):
-        s = s.replace(a, b)
-    while s.endswith(","):
-        s = s[:-1].rstrip()
-    return s
 
 
 # ----------------------------------------------------------------------------------------------------
@@ -407,15 +385,6 @@ def _sep(res: list[str]) -> str:
 def _comma(goal: str) -> str:
     """A comma to close a goal that has commas of its own before the sentence goes on."""
     return "," if "," in goal else ""
-
-
-def _listed(rng, res: list[str]) -> str:
-    """Goals in a running sentence: commas, or semicolons where a goal has commas of its own (two goals: 'and')."""
-    if len(res) == 2:
-        return f"{res[0]} and {res[1]}"
-    if any("," in r for r in res):
-        return "; ".join(res[:-1]) + "; and " + res[-1]
-    return ", ".join(res[:-1]) + _pick(rng, (" and ", ", and ")) + res[-1]
 
 
 _MISSIONS = ("Homestead", "Lamplighter", "Long Corridor", "Hearthside", "Quiet Harbour")
