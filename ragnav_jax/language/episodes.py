@@ -811,6 +811,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_x": ("phrasings_x", "x"),
                     "unseen_y": ("phrasings_y", "y"),
                     "unseen_z": ("phrasings_z", "z"),
+                    "unseen_w": ("phrasings_w", "w"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
