@@ -14,9 +14,11 @@ from hypothesis import strategies as st
 
 from ragnav_jax.config import Config
 from ragnav_jax.errors import UserError
+from ragnav_jax.language import tagger as tagger_module
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.language.sensor_reader import HELD_OUT
 from ragnav_jax.language.tagger import (
+    AXES,
     BA,
     BT,
     IA,
@@ -27,25 +29,31 @@ from ragnav_jax.language.tagger import (
     augment,
     filler_word,
     filler_words,
+    label_axes,
     label_words,
     reconcile,
     spans,
     training_examples,
     words,
 )
-from ragnav_jax.language.types import Subgoal, Target
+from ragnav_jax.language.types import SensorConstraint, Subgoal, Target
 
 SENTENCE = "Go to the red mug near the lamp, then the sofa."
 
 
-def probs_for(text: str, tagged: dict[str, int], p: float = 0.99) -> np.ndarray:
+def probs_for(text: str, tagged: dict[str, int], p: float = 0.99, axes: dict[str, int] | None = None) -> np.ndarray:
     """(n_words, 5) probabilities: the words of `tagged` (word -> tag) get that tag with probability p, the
-    rest O with probability p."""
+    rest O with probability p; with `axes` (word -> AXES index), (n_words, 8) with the coordinate head's too."""
     ws = [w.lower() for w in words(text)]
     out = np.full((len(ws), len(TAGS)), (1 - p) / (len(TAGS) - 1), np.float32)
     for i, w in enumerate(ws):
         out[i, tagged.get(w, O)] = p
-    return out
+    if axes is None:
+        return out
+    ax = np.full((len(ws), len(AXES)), (1 - p) / (len(AXES) - 1), np.float32)
+    for i, w in enumerate(ws):
+        ax[i, axes.get(w, 0)] = p
+    return np.concatenate([out, ax], -1)
 
 
 def test_labels_mark_goal_phrases_and_anchors():
@@ -232,6 +240,51 @@ def test_a_goal_without_a_hint_takes_its_clauses_loose_numbers():
     assert [s.location for s in out] == [None, Location(3.5, 2.0)] and not dropped and not added
 
 
+def test_axes_label_a_hints_numbers_x_then_y_between_the_goals_beside_it():
+    text = "Go to the sofa at x=3.5 & y=2, then the lamp, 2 doors down."
+    truth = parse_instruction("Go to the sofa at (3.5, 2), then the lamp.")
+    ws, tags = label_words(text, truth)
+    axes = label_axes(ws, tags, truth)
+    assert {w: AXES[a] for w, a in zip(ws, axes) if a} == {"3.5": "x", "2": "y"}
+    assert axes[ws.index("doors") - 1] == 0  # the lamp's number is the next goal's
+    spelt = "Go to the sofa at three point five, two, then the lamp."
+    assert label_axes(*label_words(spelt, truth), truth) is None  # not learnt from: the hint is not found in digits
+    assert label_axes(*label_words(SENTENCE, parse_instruction(SENTENCE)), parse_instruction(SENTENCE)) == [0] * 13
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 200), st.integers(0, 200), st.sampled_from(["x={x} & y={y}", "the spot whose x is {x} and whose y "
+                                                                   "is {y}", "{x} across, {y} up"]))
+def test_the_coordinate_head_makes_a_hint_and_unmakes_the_readings_read_from_it(x10, y10, frame):
+    from ragnav_jax.language.types import Location
+
+    x, y = x10 / 10, y10 / 10
+    text = f"Translate to the speaker at {frame.format(x=x, y=y)} and hold there, then the lamp at 21 degrees."
+    sgs = (Subgoal(0, Target("speaker", "speaker"), sensors=(SensorConstraint("temperature_c", "approx", x),)),
+           Subgoal(1, Target("lamp", "lamp"), sensors=(SensorConstraint("temperature_c", "approx", 21.0),)))
+    tagged = {"speaker": BT, "lamp": BT}
+    ax = {str(x): 1, str(y): 2} if str(x) != str(y) else {}
+    out, dropped, added = reconcile(text, sgs, probs_for(text, tagged, axes=ax), clauses=True)
+    if ax:
+        assert out[0].location == Location(x, y) and not out[0].sensors and out[1] == sgs[1]
+        assert not dropped and not added
+    else:  # one word cannot be both
+        assert out[0].location is None
+    # without the head, or not likelier a hint's than not, the loose numbers rule alone (three numbers: no hint)
+    for p in (probs_for(text, tagged), probs_for(text, tagged, axes=ax, p=0.45)):
+        assert reconcile(text, sgs, p, conf=0.9, clauses=True)[0][0].sensors == sgs[0].sensors
+
+
+def test_a_hint_said_before_the_first_goal_is_the_first_goals():
+    from ragnav_jax.language.types import Location
+
+    text = "At 4.5 across, 7 up you will find the bureau; after that the sofa."
+    sgs = (Subgoal(0, Target("bureau", "bureau")), Subgoal(1, Target("sofa", "sofa")))
+    out, _, _ = reconcile(text, sgs, probs_for(text, {"bureau": BT, "sofa": BT}, axes={"4.5": 1, "7": 2}),
+                          clauses=True)
+    assert [s.location for s in out] == [Location(4.5, 7.0), None]
+
+
 @pytest.mark.parametrize("text,tagged,want", [
     ("Go to the sofa (think teal), then the lamp.", {"sofa": BT, "lamp": BT}, [("teal",), ()]),
     ("Go to the sofa, showing as switched on, then the lamp.", {"sofa": BT, "lamp": BT}, [("switched on",), ()]),
@@ -373,8 +426,7 @@ def test_reconcile_leaves_the_parse_when_the_tagger_is_unsure(p):
 
 
 @pytest.mark.parametrize("reader, held_out", [
-    *(("tagger", h) for h in ["unseen", "unseen_q", "unseen_r", "unseen_s", "unseen_t", "unseen_u", "unseen_v",
-                              "unseen_x", "unseen_y", "unseen_z"]),
+    *(("tagger", h) for h in tagger_module.HELD_OUT),
     *(("sensor_reader", h) for h in HELD_OUT)])
 def test_training_examples_read_no_held_out_template_set(reader, held_out):
     examples = importlib.import_module(f"ragnav_jax.language.{reader}").training_examples
@@ -395,7 +447,8 @@ def test_training_examples_are_labelled_and_deterministic():
     a = training_examples(Config(), 1, 3, ("seen", "unseen_dev8"), (2, 1, 1))
     b = training_examples(Config(), 1, 3, ("seen", "unseen_dev8"), (2, 1, 1))
     assert a == b and len(a) >= 6
-    assert all(len(ws) == len(tags) and BT in tags for ws, tags in a)
+    assert all(len(ws) == len(tags) and BT in tags and (axes is None or len(axes) == len(ws)) for ws, tags, axes in a)
+    assert any(axes and 1 in axes and 2 in axes for _, _, axes in a)  # the hints of text+location goals
 
 
 def test_untrained_adapters_change_no_token_state():
@@ -497,13 +550,21 @@ def test_fitted_confidence_is_the_smallest_that_changes_at_most_the_allowed_shar
     assert got["conf"] == 0.98 and got["changes"]["0.98"] == 0
 
 
-def test_the_fitted_tagger_finds_the_goals_of_a_sentence_no_template_writes():
+def test_the_fitted_tagger_finds_the_goals_and_hints_of_sentences_no_template_writes():
     from ragnav_jax.language.tagger import load_tagger
+    from ragnav_jax.language.types import Location
 
+    tagger = load_tagger("")
+    sets = tagger.meta["fitted_on"]["template_sets"]
+    assert tagger.meta["fitted_on"]["world_split"] == "seen" and not set(sets) & set(tagger_module.HELD_OUT)
     text = "Could you pop by the gramophone and then the aquarium heater, no rush, whatever order works."
-    p = load_tagger("").word_probs([text])[0]
+    p = tagger.word_probs([text])[0]
     ws = words(text)
-    assert [" ".join(ws[i:j]) for i, j in spans(p.argmax(-1), BT)] == ["gramophone", "aquarium heater"]
+    assert [" ".join(ws[i:j]) for i, j in spans(p[:, : len(TAGS)].argmax(-1), BT)] == ["gramophone", "aquarium heater"]
+    text = "Head for the gramophone, the one parked at map reference 6.2 by 3.4, and then the 2nd aquarium heater."
+    p = tagger.word_probs([text])[0]
+    ws = [w.lower() for w in words(text)]
+    assert tagger_module.axis_hint(ws, p, 0, len(ws)) == Location(6.2, 3.4)
 
 
 def test_fitting_is_deterministic_and_the_file_round_trips(tmp_path):
@@ -513,7 +574,8 @@ def test_fitting_is_deterministic_and_the_file_round_trips(tmp_path):
     a, meta = fit_tagger(Config(), s, ("seen",))
     b, _ = fit_tagger(Config(), s, ("seen",))
     assert a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a)
-    assert all(k[0] == "tag" or "_lora_" in k[-2] for k in a)  # only the adapters and the head are fitted
+    assert all(k[0] in ("tag", "axis") or "_lora_" in k[-2] for k in a)  # only the adapters and the heads are fitted
+    assert any(k[0] == "axis" for k in a)
     save_tagger(a, meta, tmp_path / "t.npz")
     trained, meta2 = load_tagger_file(tmp_path / "t.npz")
     assert meta2 == meta

@@ -42,14 +42,14 @@ def _tagged(chain, cfg):
     (as `eval.tagger` and `eval.sensor_reader` do), what changed on stderr."""
     import dataclasses
 
-    from ragnav_jax.language.tagger import BT, load_tagger, reconcile, spans, words
+    from ragnav_jax.language.tagger import BT, TAGS, load_tagger, reconcile, spans, words
     from ragnav_jax.language.types import derive_dependencies
 
     tagger = load_tagger(cfg.eval.tagger_file)
     conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
     probs = tagger.word_probs([chain.instruction])[0]
     ws = words(chain.instruction)
-    phrases = [" ".join(ws[i:j]) for i, j in spans(probs.argmax(-1), BT)]
+    phrases = [" ".join(ws[i:j]) for i, j in spans(probs[:, : len(TAGS)].argmax(-1), BT)]
     subgoals, dropped, added = reconcile(chain.instruction, chain.subgoals, probs, conf, cfg.eval.tagger_clauses)
     print(f"ragnav: note: tagger (confidence {conf}): goal phrases {phrases}; dropped {list(dropped)}; "
           f"added {list(added)}", file=sys.stderr)
@@ -234,8 +234,8 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.set_defaults(func=cmd_check_parse)
 
     for name, what, file, seed, default, func in (
-            ("fit-tagger", "the instruction tagger (goal phrases)", "tagger", 4242, "the seen and development sets",
-             cmd_fit_tagger),
+            ("fit-tagger", "the instruction tagger (goal phrases, coordinate hints)", "tagger", 4242,
+             "every set but the held-out one", cmd_fit_tagger),
             ("fit-sensor-reader", "the learned reader of sensor comparisons", "sensor_reader", 5151,
              "every set but the held-out one", cmd_fit_sensor_reader)):
         p = sub.add_parser(name, parents=[common], help=f"fit {what} on seen-split houses (writes OUT/{file}.npz)")

@@ -1,17 +1,19 @@
 """A learned reader of where an instruction's goals are: MiniLM with low-rank adapters, tagging each word.
 
     tagger = InstructionTagger.load()                  # the fitted adapter of ragnav_jax/data/tagger.npz
-    probs = tagger.word_probs(["first the sofa, then the fridge"])   # [(n_words, 5)] over TAGS
+    probs = tagger.word_probs(["first the sofa, then the fridge"])   # [(n_words, 8)]: TAGS, then AXES
 
 The rule parser is written beside the sentences it has met, and each new author's phrasing breaks it in
 the same two ways: a remark is read as a goal, or two goals run into one. Which words name a goal is a
 matter of syntax more than of the words themselves, and a pretrained encoder carries syntax. The tagger
-labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/I-A (an anchor's).
+labels every word O, B-T/I-T (a goal's noun phrase: attributes and head) or B-A/I-A (an anchor's), and, with a
+second head, tells the numbers of a coordinate hint from the rest (AXES: none, x, y). Coordinate hints come in
+as many forms as authors ("at x=14.7 & y=8.5", "the spot whose x is 5.1 and whose y is 0.3", "posn 3.5E 2.0N");
+which number is a coordinate, and which a reading's value or a count, is a matter of the words around it.
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
-evaluation house), episodes written with the seen templates and the development template sets (the ones
-the parser rounds were developed against; never the held-out `unseen` or `unseen_q` to `unseen_z`),
-labelled from the generator's truth. Half the examples have every goal and anchor phrase replaced by random words of the
+evaluation house), episodes written with every template set but the held-out one (`HELD_OUT`), labelled
+from the generator's truth (a coordinate hint's numbers found as written, `label_axes`). Half the examples have every goal and anchor phrase replaced by random words of the
 encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
 a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
 query and value) and the tag head are trained; the encoder's weights stay those of all-MiniLM-L6-v2,
@@ -46,16 +48,25 @@ from ragnav_jax.memory.encoder import BertShape, MiniLM, MiniLMEmbedder, _bucket
 
 TAGS = ("O", "B-T", "I-T", "B-A", "I-A")
 O, BT, IT, BA, IA = range(len(TAGS))
+AXES = ("none", "x", "y")  # what a word is to a coordinate hint: none of its numbers, its x or its y
+AX_X, AX_Y = len(TAGS) + 1, len(TAGS) + 2  # their columns in `word_probs`, after the tags
 TAGGER_FORMAT = "ragnav-tagger/1"
 MAX_TOKENS = 128
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['\-.][A-Za-z0-9]+)*|\n+|\S")
 ADD_CONF = 0.5  # a tagged phrase the parse missed is added when its every word is likelier a goal's than not
+# a number is a coordinate hint's x (or y) when the coordinate head finds it likelier so than not. Not the fitted
+# confidence of the goal tags: the tagger of round 23 was fitted to it at 0.999, which the hints of Z (a development
+# set), read right, mostly do not reach (0.99-0.998)
+AXIS_CONF = 0.5
 LINE_BREAK = "|"  # the word a line break is read as: lists and headings are laid out in lines
-# the template sets a tagger may learn from: the seen templates and the development sets, never the held-out
-# `unseen` (P), `unseen_q` (Q), `unseen_r` (R), `unseen_s` (S), `unseen_t` (T), `unseen_u` (U), `unseen_v` (V)
-# `unseen_x` (X), `unseen_y` (Y) or `unseen_z` (Z)
+# the template sets a tagger may learn from: every set of the generator but the held-out W (`unseen_w`), the fresh set
+# of round 23. Up to round 22 the tagger learnt from the seen templates and the twelve development sets alone; round
+# 23 added the sets measured fresh in earlier rounds (P to Z) and the four training sets, as the sensor reader did
+HELD_OUT = ("unseen_w",)
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
-                "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12")
+                "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12",
+                "unseen_train1", "unseen_train2", "unseen_train3", "unseen_train4", "unseen", "unseen_q", "unseen_r",
+                "unseen_s", "unseen_t", "unseen_u", "unseen_v", "unseen_x", "unseen_y", "unseen_z")
 
 
 def words(text: str) -> list[str]:
@@ -123,6 +134,37 @@ def label_words(instruction: str, truth) -> tuple[list[str], list[int]] | None:
     return ws, tags
 
 
+_VALUE = re.compile(r"\d+(?:\.\d+)?")
+
+
+def word_value(ws: Sequence[str], i: int) -> float | None:
+    """The number word i writes in digits ("3.5", "14"; negative after a lone "-" that follows no number), or None."""
+    if not _VALUE.fullmatch(ws[i]):
+        return None
+    minus = i > 0 and ws[i - 1] == "-" and (i < 2 or _VALUE.fullmatch(ws[i - 2]) is None)
+    return -float(ws[i]) if minus else float(ws[i])
+
+
+def label_axes(ws: Sequence[str], tags: Sequence[int], truth) -> list[int] | None:
+    """AXES index per word of a labelled instruction (`label_words`): the number words that write a goal's
+    coordinate hint, x then y, between the goal phrases before and after it; None where a hint's numbers are not
+    found there once each in digits (spelt out, "three point five", or written "3,5": the example then teaches
+    the goal tags alone)."""
+    axes = [0] * len(ws)
+    goals = spans(tags, BT)
+    for k, sg in enumerate(truth.subgoals):
+        if sg.location is None:
+            continue
+        lo = goals[k - 1][1] if k > 0 else 0
+        hi = goals[k + 1][0] if k + 1 < len(goals) else len(ws)
+        for axis, v in ((1, sg.location.x), (2, sg.location.y)):
+            at = [i for i in range(lo, hi) if axes[i] == 0 and (w := word_value(ws, i)) is not None and abs(w - v) < 1e-6]
+            if not at:
+                return None
+            axes[at[0]] = axis
+    return axes
+
+
 @dataclasses.dataclass(frozen=True)
 class Fillers:
     """What a goal or anchor phrase is replaced by in augmented examples (`filler_words`)."""
@@ -179,8 +221,9 @@ def check_splits(splits: Sequence[str]) -> None:
 
 
 def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN_SPLITS,
-                      per_scene: tuple[int, int, int] = (10, 5, 5)) -> list[tuple[list[str], list[int]]]:
-    """(words, tags) of episodes written with each template set in `splits` over `scenes` seen-split houses."""
+                      per_scene: tuple[int, int, int] = (10, 5, 5)) -> list[tuple[list[str], list[int], list[int] | None]]:
+    """(words, tags, axes or None) of episodes written with each template set in `splits` over `scenes` seen-split
+    houses (`label_words`, `label_axes`)."""
     from ragnav_jax.evaluation.fitting import _seen_scenes
     from ragnav_jax.language.episodes import generate_episodes
 
@@ -193,7 +236,7 @@ def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN
         for g in generate_episodes(houses, ecfg, seed):
             got = label_words(g.episode.instruction, g.truth)
             if got is not None:
-                out.append(got)
+                out.append((*got, label_axes(*got, g.truth)))
     return out
 
 
@@ -202,20 +245,23 @@ def training_examples(cfg, scenes: int, seed: int, splits: Sequence[str] = TRAIN
 
 
 class Tagger(nn.Module):
-    """MiniLM token states (with adapters) -> (B, L, len(TAGS)) tag logits."""
+    """MiniLM token states (with adapters) -> (B, L, len(TAGS)) tag logits, then (with `axes`) len(AXES) logits of
+    the coordinate head: (B, L, len(TAGS) + len(AXES))."""
 
     shape: BertShape
     lora: int = 8
+    axes: bool = True  # the coordinate head (files fitted before round 23 have none)
 
     @nn.compact
     def __call__(self, ids, train: bool = False):  # ids (B, L) int32, 0 = padding
         h = MiniLM(self.shape, pool=False, lora=self.lora, name="enc")(ids, (ids > 0).astype(jnp.int32))
         h = nn.Dropout(0.1, deterministic=not train)(h)
-        return nn.Dense(len(TAGS), name="tag")(h)
+        out = nn.Dense(len(TAGS), name="tag")(h)
+        return jnp.concatenate([out, nn.Dense(len(AXES), name="axis")(h)], -1) if self.axes else out
 
 
 def _is_trained(path: tuple[str, ...]) -> bool:
-    return path[0] == "tag" or "_lora_" in path[-2]
+    return path[0] in ("tag", "axis") or "_lora_" in path[-2]
 
 
 def encode_words(tokenizer, wordlists: Sequence[Sequence[str]]) -> tuple[np.ndarray, np.ndarray]:
@@ -265,23 +311,32 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
     rng = np.random.default_rng(settings.seed)
     examples = training_examples(cfg, settings.scenes, settings.seed, splits)
     fillers = filler_words(base.tokenizer, settings.rare_fillers)
-    ws = [w for w, _ in examples]
-    tg = [t for _, t in examples]
+    ws = [w for w, _, _ in examples]
+    tg = [t for _, t, _ in examples]
+    ax = [a if a is not None else [-1] * len(t) for _, t, a in examples]  # -1: not learnt from
     for _ in range(int(settings.augment)):
-        ws += [augment(w, t, rng, fillers) for w, t in examples]
-        tg += [t for _, t in examples]
+        ws += [augment(w, t, rng, fillers) for w, t, _ in examples]
+        tg += tg[: len(examples)]
+        ax += ax[: len(examples)]
     ids, first = encode_words(base.tokenizer, ws)
-    y = np.where(first >= 0, np.take_along_axis(_pad_tags(tg), np.maximum(first, 0), 1), -1).astype(np.int32)
+
+    def per_token(labels):
+        return np.where(first >= 0, np.take_along_axis(_pad_tags(labels), np.maximum(first, 0), 1), -1).astype(np.int32)
+
+    y = np.stack([per_token(tg), per_token(ax)], -1)  # (n, MAX_TOKENS, 2): tag, axis (-1: no loss)
     model = Tagger(base.shape, settings.lora)
     key = jax.random.PRNGKey(settings.seed)
     key, k0 = jax.random.split(key)
     trained, frozen = split_init(model, base, k0, _is_trained, jnp.asarray(ids[:2, :32]))
 
-    def loss_fn(tr, x, t, k):
+    def loss_fn(tr, x, t, k):  # the tags' cross-entropy plus the coordinate head's, each over its labelled tokens
         logits = model.apply(join(tr, frozen), x, True, rngs={"dropout": k})
-        m = t >= 0
-        ce = optax.softmax_cross_entropy_with_integer_labels(logits, jnp.maximum(t, 0))
-        return (ce * m).sum() / jnp.maximum(m.sum(), 1)
+        loss = 0.0
+        for head, (a, b) in enumerate(((0, len(TAGS)), (len(TAGS), len(TAGS) + len(AXES)))):
+            m = t[..., head] >= 0
+            ce = optax.softmax_cross_entropy_with_integer_labels(logits[..., a:b], jnp.maximum(t[..., head], 0))
+            loss = loss + (ce * m).sum() / jnp.maximum(m.sum(), 1)
+        return loss
 
     def batches():
         order = rng.permutation(len(ids))
@@ -292,9 +347,10 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
 
     steps = settings.epochs * (len(ids) // settings.batch)
     trained, losses = train(loss_fn, trained, batches, steps, settings.lr, key, "fit-tagger", progress)
-    meta = {"format": TAGGER_FORMAT, "lora": settings.lora, "tags": list(TAGS),
+    meta = {"format": TAGGER_FORMAT, "lora": settings.lora, "tags": list(TAGS), "axes": list(AXES),
             "fitted_on": {"world_split": "seen", "template_sets": list(splits), "scenes": settings.scenes,
-                          "seed": settings.seed, "examples": len(examples), "augmented": len(ids) - len(examples)},
+                          "seed": settings.seed, "examples": len(examples), "augmented": len(ids) - len(examples),
+                          "with_hints": sum(a is not None and 0 < max(a) for _, _, a in examples)},
             "settings": dataclasses.asdict(settings), "final_loss": float(np.mean(losses[-50:])) if losses else None,
             "backend": jax.default_backend()}
     return trained, meta
@@ -333,20 +389,27 @@ class InstructionTagger:
     def __init__(self, trained: dict, meta: dict, batch_size: int = 32):
         self.base = MiniLMEmbedder()
         self.meta = meta
-        self.model = Tagger(self.base.shape, int(meta["lora"]))
+        self.axes = "axes" in meta
+        self.model = Tagger(self.base.shape, int(meta["lora"]), self.axes)
         self.params = join(trained, encoder_params(self.base))
         self.batch_size = batch_size
-        self._apply = jax.jit(lambda p, x: jax.nn.softmax(self.model.apply(p, x), -1))
+        n = len(TAGS)
+        self._apply = jax.jit(lambda p, x: (lambda z: jnp.concatenate(
+            [jax.nn.softmax(z[..., :n], -1), jax.nn.softmax(z[..., n:], -1)], -1))(self.model.apply(p, x)))
 
     @classmethod
     def load(cls, path: str | Path | None = None) -> InstructionTagger:
         return cls(*load_tagger_file(path or data_path("tagger.npz")))
 
     def word_probs(self, texts: Sequence[str]) -> list[np.ndarray]:
-        """Per text, (n_words, len(TAGS)) tag probabilities of `words(text)` (words past the token limit: O)."""
+        """Per text, (n_words, len(TAGS) + len(AXES)) probabilities of `words(text)`: its tags', then the
+        coordinate head's (`AXES`; a file without that head gives (n_words, len(TAGS))). Words past the token
+        limit: O and none."""
         wl = [words(t) for t in texts]
         ids, first = encode_words(self.base.tokenizer, wl)
-        out = [np.tile(np.eye(len(TAGS), dtype=np.float32)[O], (len(w), 1)) for w in wl]
+        row = np.eye(len(TAGS), dtype=np.float32)[O]
+        row = np.concatenate([row, np.eye(len(AXES), dtype=np.float32)[0]]) if self.axes else row
+        out = [np.tile(row, (len(w), 1)) for w in wl]
         for s in range(0, len(ids), self.batch_size):
             x = ids[s : s + self.batch_size]
             L = _length(x)
@@ -480,6 +543,23 @@ def loose_reading(clause: str, used: Sequence[float] = ()):
         return None
 
 
+def axis_hint(ws: Sequence[str], probs: np.ndarray, lo: int, hi: int, conf: float = AXIS_CONF):
+    """The coordinate hint the tagger's coordinate head reads in words ws[lo:hi]: the number word likeliest
+    the x and the one likeliest the y, each above `conf`; None without both (or without the head: probs with
+    len(TAGS) columns). probs: (n_words, len(TAGS) + len(AXES)) of `word_probs`."""
+    from ragnav_jax.language.types import Location
+
+    if probs.shape[-1] <= AX_Y:
+        return None
+    best = []
+    for col in (AX_X, AX_Y):
+        got = [(probs[i, col], i) for i in range(lo, hi) if probs[i, col] > conf and word_value(ws, i) is not None]
+        if not got:
+            return None
+        best.append(word_value(ws, max(got)[1]))
+    return Location(*best)
+
+
 def clause_descriptors(ws: Sequence[str], tags: Sequence[int], lo: int, hi: int, sg,
                        descriptors: Collection[str]) -> tuple[str, ...]:
     """What a goal's clause says of it after its phrase and the parse did not read: the `descriptors` (words
@@ -523,7 +603,10 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     home with the fish tank").
 
     With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
-    back to the bare target; a goal read without a coordinate hint takes the two numbers its clause (from its
+    back to the bare target; a goal takes as its coordinate hint the numbers the tagger's coordinate head finds
+    likelier a hint's x and y than not (`AXIS_CONF`), from its place (the first goal's: the instruction's start) to the next goal's, and a
+    sensor constraint the parse read from them goes (`axis_hint`: "the speaker at x=14.7 & y=8.5" is no
+    temperature of 14.7); a goal still without a coordinate hint takes the two numbers its clause (from its
     tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); a goal tagged in place and read
     without a reading takes the one its clause says, if any (`loose_reading`); and a goal tagged in place takes
     the `descriptors` (what the house's captions describe things by) its clause says of it after its phrase
@@ -536,7 +619,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
 
     ws = [w.lower() for w in words(instruction)]
     stems = [_stem(w) for w in ws]
-    tags = probs.argmax(-1) if len(probs) else np.zeros(0, int)
+    tags = probs[:, : len(TAGS)].argmax(-1) if len(probs) else np.zeros(0, int)
     goals = spans(tags, BT)
     held = [set(stems[i:j]) for i, j in goals]
     sure = [min([probs[i, BT]] + [probs[k, IT] for k in range(i + 1, j)]) > ADD_CONF for i, j in goals]
@@ -609,6 +692,14 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         starts = [min(where[n], len(at) - 1) for n in order] + [len(at) - 1]
         for pos, n in enumerate(order):
             clause = instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]]
+            # the numbers the coordinate head is sure are a hint's, from the goal's place (the first goal's: the
+            # instruction's start) to the next goal's, are its hint, and no reading's value
+            loc = axis_hint(ws, probs, 0 if pos == 0 else starts[pos], starts[pos + 1])
+            if loc is not None:
+                sensors = tuple(c for c in kept[n].sensors
+                                if c.value is None or min(abs(c.value - loc.x), abs(c.value - loc.y)) > 1e-9)
+                if (loc, sensors) != (kept[n].location, kept[n].sensors):
+                    kept[n], hinted = dataclasses.replace(kept[n], location=loc, sensors=sensors), True
             if kept[n].location is None:
                 used = [c.value for c in kept[n].sensors if c.value is not None]
                 loc = loose_hint(clause, used)
