@@ -812,6 +812,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_y": ("phrasings_y", "y"),
                     "unseen_z": ("phrasings_z", "z"),
                     "unseen_w": ("phrasings_w", "w"),
+                    "unseen_aa": ("phrasings_aa", "aa"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
