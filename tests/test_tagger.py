@@ -252,6 +252,15 @@ def test_axes_label_a_hints_numbers_x_then_y_between_the_goals_beside_it():
     assert label_axes(*label_words(SENTENCE, parse_instruction(SENTENCE)), parse_instruction(SENTENCE)) == [0] * 13
 
 
+@pytest.mark.parametrize("ws,i,want", [
+    (["3.5"], 0, 3.5), (["14"], 0, 14.0), (["3.5m"], 0, 3.5), (["11.9e"], 0, 11.9), (["at", "-", "2.0n"], 2, -2.0),
+    (["5", "-", "7"], 2, 7.0), (["3.5mph"], 0, None), (["x"], 0, None), (["e3"], 0, None)])
+def test_a_number_word_is_its_digits_with_at_most_two_letters_glued_on(ws, i, want):
+    from ragnav_jax.language.tagger import word_value
+
+    assert word_value(ws, i) == want
+
+
 @settings(max_examples=40, deadline=None)
 @given(st.integers(0, 200), st.integers(0, 200), st.sampled_from(["x={x} & y={y}", "the spot whose x is {x} and whose y "
                                                                    "is {y}", "{x} across, {y} up"]))
