@@ -13,11 +13,12 @@ which number is a coordinate, and which a reading's value or a count, is a matte
 
 Training data (`training_examples`): houses of the seen split drawn with their own seed (never an
 evaluation house), episodes written with every template set but the held-out one (`HELD_OUT`), labelled
-from the generator's truth (a coordinate hint's numbers found as written, `label_axes`). Half the examples have every goal and anchor phrase replaced by random words of the
-encoder's vocabulary (the same replacement for the same phrase), so the tagger learns where goals sit in
-a sentence, not which nouns the seen catalogue holds. Only the adapters (rank `lora` on every layer's
-query and value) and the tag head are trained; the encoder's weights stay those of all-MiniLM-L6-v2,
-so the fitted file holds a few hundred kilobytes.
+from the generator's truth (a coordinate hint's numbers found as written, `label_axes`). Half the examples
+have every goal and anchor phrase replaced by random words of the encoder's vocabulary (the same
+replacement for the same phrase), so the tagger learns where goals sit in a sentence, not which nouns the
+seen catalogue holds. Only the adapters (rank `lora` on every layer's query and value) and the two heads
+are trained; the encoder's weights stay those of all-MiniLM-L6-v2, so the fitted file holds a few hundred
+kilobytes.
 """
 
 from __future__ import annotations
@@ -263,6 +264,14 @@ class Tagger(nn.Module):
         return jnp.concatenate([out, nn.Dense(len(AXES), name="axis")(h)], -1) if self.axes else out
 
 
+def head_probs(logits):
+    """(..., len(TAGS) [+ len(AXES)]) logits -> the same shape of probabilities, a softmax per head."""
+    n = len(TAGS)
+    if logits.shape[-1] == n:
+        return jax.nn.softmax(logits, -1)
+    return jnp.concatenate([jax.nn.softmax(logits[..., :n], -1), jax.nn.softmax(logits[..., n:], -1)], -1)
+
+
 def _is_trained(path: tuple[str, ...]) -> bool:
     return path[0] in ("tag", "axis") or "_lora_" in path[-2]
 
@@ -396,9 +405,7 @@ class InstructionTagger:
         self.model = Tagger(self.base.shape, int(meta["lora"]), self.axes)
         self.params = join(trained, encoder_params(self.base))
         self.batch_size = batch_size
-        n = len(TAGS)
-        self._apply = jax.jit(lambda p, x: (lambda z: jnp.concatenate(
-            [jax.nn.softmax(z[..., :n], -1), jax.nn.softmax(z[..., n:], -1)], -1))(self.model.apply(p, x)))
+        self._apply = jax.jit(lambda p, x: head_probs(self.model.apply(p, x)))
 
     @classmethod
     def load(cls, path: str | Path | None = None) -> InstructionTagger:
@@ -607,9 +614,9 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
 
     With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
     back to the bare target; a goal takes as its coordinate hint the numbers the tagger's coordinate head finds
-    likelier a hint's x and y than not (`AXIS_CONF`), from its place (the first goal's: the instruction's start) to the next goal's, and a
-    sensor constraint the parse read from them goes (`axis_hint`: "the speaker at x=14.7 & y=8.5" is no
-    temperature of 14.7); a goal still without a coordinate hint takes the two numbers its clause (from its
+    likelier a hint's x and y than not (`AXIS_CONF`), from its place (the first goal's: the instruction's start)
+    to the next goal's, and a sensor constraint the parse read from them goes (`axis_hint`: "the speaker at
+    x=14.7 & y=8.5" is no temperature of 14.7); a goal still without a coordinate hint takes the two numbers its clause (from its
     tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); a goal tagged in place and read
     without a reading takes the one its clause says, if any (`loose_reading`); and a goal tagged in place takes
     the `descriptors` (what the house's captions describe things by) its clause says of it after its phrase
@@ -695,7 +702,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         starts = [min(where[n], len(at) - 1) for n in order] + [len(at) - 1]
         for pos, n in enumerate(order):
             clause = instruction[at[starts[pos]] : at[max(starts[pos], starts[pos + 1])]]
-            # the numbers the coordinate head is sure are a hint's, from the goal's place (the first goal's: the
+            # the numbers the coordinate head reads as a hint's, from the goal's place (the first goal's: the
             # instruction's start) to the next goal's, are its hint, and no reading's value
             loc = axis_hint(ws, probs, 0 if pos == 0 else starts[pos], starts[pos + 1])
             if loc is not None:
