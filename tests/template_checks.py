@@ -1,4 +1,4 @@
-"""Checks shared by the tests of template sets M to X: each takes the set's own functions and its own words
+"""Checks shared by the tests of template sets M to AA: each takes the set's own functions and its own words
 (relation words, comparator readers, order cues), so the readers stay independent of the templates they check."""
 
 from __future__ import annotations
@@ -168,3 +168,20 @@ def depths(text: str) -> list[int]:
         if ch == ")":
             d -= 1
     return out
+
+
+def word_number(w: str) -> float:
+    """A number written as one word: digits ("14") or a spoken number ("fourteen")."""
+    if re.fullmatch(r"\d+", w):
+        return float(w)
+    k = spoken_numbers([w])
+    assert len(k) == 1, w
+    return k[0]
+
+
+def tidy_commas(s: str) -> str:
+    """Text with runs of spaces closed up, commas that lost their words merged and none left at the end."""
+    s = " ".join(s.split())
+    for a, b in ((" ,", ","), (",,", ","), (", ,", ",")):
+        s = s.replace(a, b)
+    return s.strip().rstrip(",").strip()

@@ -24,6 +24,8 @@ from template_checks import (
     reading_norm,
     spoken_numbers,
     target_truth,
+    tidy_commas,
+    word_number,
 )
 from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoals
 
@@ -172,11 +174,6 @@ _ROOM_RX = re.compile(r"(?:, )?\b(?:in the room known as|somewhere in|kept in|wi
                       + "|".join(sorted(ROOMS, key=len, reverse=True)) + r")\b,?")
 
 
-def _clean(s: str) -> str:
-    s = " ".join(s.split())
-    for a, b in ((" ,", ","), (",,", ","), (", ,", ",")):
-        s = s.replace(a, b)
-    return s.strip().rstrip(",").strip()
 
 
 def read_goal(text: str) -> tuple[dict, str | None]:
@@ -185,11 +182,11 @@ def read_goal(text: str) -> tuple[dict, str | None]:
     if m:
         room = m.group(1)
         text = text[: m.start()] + " " + text[m.end():]
-    text = _undash(_clean(text))
+    text = _undash(tidy_commas(text))
     rels = _relations_at_top(text)
     main = text[: rels[0][0]] if rels else text
     main = re.sub(r",?\s*located\s*$", "", main.strip())
-    got = _read_np(_clean(main))
+    got = _read_np(tidy_commas(main))
     if rels:
         got["relations"] += _read_chain(text[rels[0][0]:])
     return got, room
@@ -297,12 +294,6 @@ _TEEN_RX = "(?:zero|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twel
 _NUMWORD_RX = rf"(?:(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)(?:-{_DIGIT_RX})?|{_TEEN_RX})"
 
 
-def _word_value(w: str) -> float:
-    if re.fullmatch(r"\d+", w):
-        return float(w)
-    k = spoken_numbers([w])
-    assert len(k) == 1, w
-    return k[0]
 
 
 def numbers_in(text: str) -> list[float]:
@@ -315,11 +306,11 @@ def numbers_in(text: str) -> list[float]:
     t = re.sub(r"\ba hundred\b", "one hundred", t)
     t = re.sub(r"(\d+)½", r"\1.5", t)
     t = re.sub(r"\b(minus )?(" + _NUMWORD_RX + r") point five\b(?! " + _DIGIT_RX + r"\b)",
-               lambda m: f"{(-1 if m.group(1) else 1) * (_word_value(m.group(2)) + 0.5):g}", t)
+               lambda m: f"{(-1 if m.group(1) else 1) * (word_number(m.group(2)) + 0.5):g}", t)
     t = re.sub(r"\b(?:zero )?point (" + _DIGIT_RX + r"(?: " + _DIGIT_RX + r")*)\b",
                lambda m: "0." + "".join(_DIGIT[w] for w in m.group(1).split()), t)
     t = re.sub(r"\b(" + _NUMWORD_RX + r") (tenths?|hundredths?)\b",
-               lambda m: f"{_word_value(m.group(1)) / (10 if m.group(2).startswith('tenth') else 100):g}", t)
+               lambda m: f"{word_number(m.group(1)) / (10 if m.group(2).startswith('tenth') else 100):g}", t)
     return spoken_numbers(re.findall(r"-?\d*\.?\d+|[a-z]+(?:-[a-z]+)*", t))
 
 
@@ -394,7 +385,7 @@ def test_a_goal_with_sensor_and_hint_ends_on_the_coordinates(c, sg, x, y, seed):
         cut = cut.replace(tail, " ")
     if prefix:
         cut = cut.replace(f"the {prefix} ", "the ", 1)
-    got, room = read_goal(_clean(cut))
+    got, room = read_goal(tidy_commas(cut))
     assert reading_norm(got) == target_truth(sg.target), (text, cut)
     assert room == sg.room, text
 

@@ -24,6 +24,8 @@ from template_checks import (
     reading_norm,
     spoken_numbers,
     target_truth,
+    tidy_commas,
+    word_number,
 )
 from template_checks import (
     depths as _depths,
@@ -160,11 +162,6 @@ _ROOM_RX = re.compile(r"(?:, )?\b(?:(?:down |over |situated )?in the|whose (?:be
                       + "|".join(sorted(ROOMS, key=len, reverse=True)) + r")\b,?")
 
 
-def _clean(s: str) -> str:
-    s = " ".join(s.split())
-    for a, b in ((" ,", ","), (",,", ","), (", ,", ",")):
-        s = s.replace(a, b)
-    return s.strip().rstrip(",").strip()
 
 
 def read_goal(text: str) -> tuple[dict, str | None]:
@@ -173,11 +170,11 @@ def read_goal(text: str) -> tuple[dict, str | None]:
     if m:
         room = m.group(1)
         text = text[: m.start()] + " " + text[m.end():]
-    text = _undash(_clean(text))
+    text = _undash(tidy_commas(text))
     rels = _relations_at_top(text)
     main = text[: rels[0][0]] if rels else text
     main = re.sub(r",?\s*to be found\s*$", "", main.strip())
-    got = _read_np(_clean(main))
+    got = _read_np(tidy_commas(main))
     if rels:
         got["relations"] += _read_chain(text[rels[0][0]:])
     return got, room
@@ -272,12 +269,6 @@ _DIGIT = {w: str(i) for i, w in enumerate(("nought", "one", "two", "three", "fou
                                            "nine"))}
 
 
-def _word_value(w: str) -> float:
-    if re.fullmatch(r"\d+", w):
-        return float(w)
-    k = spoken_numbers([w])
-    assert len(k) == 1, w
-    return k[0]
 
 
 def numbers_in(text: str) -> list[float]:
@@ -291,7 +282,7 @@ def numbers_in(text: str) -> list[float]:
                r"four|five|six|seven|eight|nine))*)\b",
                lambda m: "0." + "".join(_DIGIT[w] for w in m.group(1).split()), t)
     t = re.sub(r"\b(minus )?(\d+|[a-z]+(?:-[a-z]+)?) and a half\b",
-               lambda m: f"{(-1 if m.group(1) else 1) * (_word_value(m.group(2)) + 0.5):g}", t)
+               lambda m: f"{(-1 if m.group(1) else 1) * (word_number(m.group(2)) + 0.5):g}", t)
     t = re.sub(r"\b(\d+|[a-z]+(?:-[a-z]+)?) degrees? below zero\b", r"minus \1 degrees", t)
     return spoken_numbers(re.findall(r"-?\d*\.?\d+|[a-z]+(?:-[a-z]+)*", t))
 
@@ -349,7 +340,7 @@ def test_sensor_goal_keeps_the_phrase_after_the_head(c, sg, seed):
 
 
 def _tidy_cut(s: str) -> str:
-    return _clean(s)
+    return tidy_commas(s)
 
 
 @SETTINGS
