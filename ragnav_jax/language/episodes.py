@@ -813,6 +813,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_z": ("phrasings_z", "z"),
                     "unseen_w": ("phrasings_w", "w"),
                     "unseen_aa": ("phrasings_aa", "aa"),
+                    "unseen_ab": ("phrasings_ab", "ab"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
