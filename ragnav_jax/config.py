@@ -558,6 +558,8 @@ class EvalConfig:
     # or coordinate hint (0 = none; evaluation/search.py)
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
     # goals naming nothing it knows dropped (evaluation/grounding.py)
+    ground_described: bool = True  # grounding also gives each goal the words its span says of it after its name
+    # that the house's captions describe things by ("the work light described as teal"; grounding.span_descriptors)
     tagger: bool = True  # the parse is reconciled with the instruction tagger before grounding: remarks it is sure
     # name no goal dropped, goal phrases it is sure of and the parse missed added (language/tagger.py)
     tagger_file: str = ""  # tagger.npz (`ragnav fit-tagger`; "" = ragnav_jax/data/tagger.npz)

@@ -8,7 +8,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ragnav_jax.config import load_config
-from ragnav_jax.evaluation.grounding import candidate_heads, content_runs, ground_subgoal, ground_subgoals, name_fit
+from ragnav_jax.evaluation.grounding import (
+    candidate_heads,
+    content_runs,
+    ground_subgoal,
+    ground_subgoals,
+    name_fit,
+    span_descriptors,
+)
 from ragnav_jax.evaluation.verify import Verifier
 from ragnav_jax.language.lexicon import CLOSED_CLASS
 from ragnav_jax.language.parser import parse_instruction
@@ -266,3 +273,57 @@ def test_a_misread_head_is_the_name_that_comes_first(verifier, phrase, text, wan
     parser did not know, the first is the goal (the longer 'chest freezer' no longer wins over 'sofa')."""
     g = ground_subgoal(verifier, goal(phrase, text), VOCAB)
     assert g is not None and g.target.head == want
+
+
+DESCRIBED = frozenset({"teal", "turquoise", "wool", "closed", "empty", "switched off", "ivory"})
+
+
+@pytest.mark.parametrize("text,head,want", [
+    ("the dehumidifier described as teal", "dehumidifier", ("teal",)),
+    ("the chest freezer in a closed state sharing quarters with the turquoise shelving unit", "chest freezer",
+     ("closed",)),  # a frame noun's modifier is the goal's, the next object's is its own
+    ("the sofa (the teal wool variety)", "sofa", ("teal", "wool")),
+    ("the bonsai tree of the ivory kind next to the teal sofa", "bonsai tree", ("ivory",)),
+    ("the sofa in a powered-off state", "sofa", ("powered off",)),  # a state said as the captions' "switched off"
+    ("the teal sofa near the spice rack", "sofa", ()),  # before the name: the parser's
+    ("the sofa near the turquoise spice rack, empty", "sofa", ()),  # after another object's name: that object's
+    ("the sofa described as mauve", "sofa", ()),  # no caption of the house says it
+])
+def test_describing_words_the_span_says_after_the_name_are_the_goals(verifier, text, head, want):
+    assert span_descriptors(verifier, goal(head, text), VOCAB, DESCRIBED) == want
+
+
+def test_described_goals_take_their_span_descriptors_once(verifier):
+    sgs = (goal("dehumidifier", "the dehumidifier described as teal"),
+           goal("teal sofa", "the sofa, teal and closed", "sofa", ("teal",)))
+    kept, _ = ground_subgoals(verifier, sgs, VOCAB, "a teal sofa", DESCRIBED, described=True)
+    assert [(s.target.attributes, s.target.phrase) for s in kept] == [(("teal",), "teal dehumidifier"),
+                                                                     (("teal", "closed"), "closed teal sofa")]
+    assert ground_subgoals(verifier, sgs, VOCAB, "a teal sofa", DESCRIBED)[0] == sgs  # off: as before
+
+
+def test_a_frame_read_as_a_container_gives_its_describing_words_to_the_goal(verifier):
+    """'the sofa in a full state' read as the sofa in a 'full state': the state is the sofa's, and no relation."""
+    frame = Relation("in", Target("full state", "state", ("full",)))
+    near = Relation("near", Target("spice rack", "spice rack"))
+    sg = Subgoal(0, Target("sofa", "sofa", (), (frame, near)), text="the sofa in a full state near the spice rack")
+    kept, _ = ground_subgoals(verifier, [sg], VOCAB, "a full sofa", DESCRIBED | {"full"}, described=True)
+    assert kept[0].target.attributes == ("full",) and kept[0].target.relations == (near,)
+
+
+text_words = st.sampled_from(["the", "a", "in", "state", "described", "as", "teal", "turquoise", "closed", "sofa",
+                              "spice", "rack", "near", "wool", "kind", "of", "switched", "off", "mauve", "dehumidifier"])
+
+
+@settings(max_examples=60, deadline=None)
+@given(before=st.lists(text_words, max_size=4), after=st.lists(text_words, max_size=8))
+def test_span_descriptors_are_caption_words_said_after_the_name(verifier, before, after):
+    """Whatever the words: only what the captions say (or a state said the same way), only words after the
+    head's last mention, never the head's own or an attribute already read, each once."""
+    text = " ".join([*before, "the", "bonsai", "tree", *after])
+    got = span_descriptors(verifier, goal("bonsai tree", text, attrs=("closed",)), VOCAB, DESCRIBED)
+    assert len(set(got)) == len(got)
+    for d in got:
+        assert d in DESCRIBED or d.replace("-", " ") in DESCRIBED or d in ("switched off",)
+        assert d != "closed" and all(w in after for w in d.split())
+    assert span_descriptors(verifier, goal("bonsai tree", text), VOCAB, ()) == ()

@@ -417,13 +417,15 @@ def test_a_goal_whose_words_another_goal_holds_stands_where_they_next_occur():
         ("riddle sheet", []), ("lamp", [("temperature_c", 52.0)]), ("riddle won't work", [])]
 
 
-def test_caption_descriptors_are_the_words_before_a_name_and_the_state_after_that_is():
+def test_caption_descriptors_are_the_words_before_a_name_the_state_after_that_is_and_what_holds_it():
     from ragnav_jax.evaluation.grounding import caption_descriptors
 
     name_of = {"lacquered ivory shelf unit": "shelf unit", "matte drying rack that is full": "drying rack",
                "steam iron that is switched off at about 20 °C": "steam iron", "a sofa": "sofa",
-               "glossy linen cupboard at 33% humidity": "linen cupboard"}
-    assert caption_descriptors(name_of) == {"lacquered", "ivory", "matte", "full", "switched off", "glossy"}
+               "glossy linen cupboard at 33% humidity": "linen cupboard",
+               "fair peace lily in a glazed planter with NDVI 0.52": "peace lily", "monstera in a sofa": "monstera"}
+    assert caption_descriptors(name_of) == {"lacquered", "ivory", "matte", "full", "switched off", "glossy", "fair",
+                                            "glazed", "planter"}  # no reading, number or name
 
 
 @pytest.mark.parametrize("p", [0.6, 0.85])

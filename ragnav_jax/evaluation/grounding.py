@@ -39,6 +39,12 @@ against the memory of the house:
   goal before it such words it holds ("the chaise longue, answering the description lilac"); one that is only
   a room name the memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it
   to the goal before it as its room;
+- a goal takes the words its span says of it after its name that the house's captions describe things by
+  (`span_descriptors`, `eval.ground_described`): "the work light described as teal", "the fruit bowl in an
+  empty state", "the sofa (the teal wool variety)", "the snake plant described as glazed" (a caption's "in a
+  glazed planter"), up to the next run of words that names a recorded object, whose modifiers are its own
+  ("sharing quarters with the turquoise shelving unit"); a relation "in" a frame no name reaches ("in a closed
+  state") gives its words to the goal and goes;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
   lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
   memory ever said it ('required' from "no further action is required", 'noted', 'requested');
@@ -61,8 +67,8 @@ from collections.abc import Collection, Sequence
 
 import numpy as np
 
-from ragnav_jax.evaluation.verify import recorded, said, vocabulary
-from ragnav_jax.language.lexicon import CLOSED_CLASS, is_modifier, is_room_phrase
+from ragnav_jax.evaluation.verify import Perceived, descriptors, recorded, said, vocabulary
+from ragnav_jax.language.lexicon import CLOSED_CLASS, SAME_STATES, is_modifier, is_room_phrase
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -70,6 +76,7 @@ NAME_LINKS = frozenset({"of", "and"})
 _WORD = re.compile(r"[a-z0-9]+(?:[-'][a-z0-9]+)*")
 _NUMBER = re.compile(r"^\d+(?:[.,]\d+)?$")
 _NUMBER_IN = re.compile(r"\d")
+_READING_WORDS = frozenset({"ndvi", "humidity", "c"})  # what a caption's reading says ("with NDVI 0.52", "at 48% humidity")
 
 
 def _closed(word: str) -> bool:
@@ -215,11 +222,80 @@ def _anchor_phrases(t: Target) -> list[str]:
     return [x for r in t.relations for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
 
 
+def _described(phrase: str, descriptors: Collection[str]) -> bool:
+    """The phrase is a word or state the house's captions describe things by, or a state said the same way
+    (`lexicon.SAME_STATES`: "powered off" where the captions say "switched off")."""
+    return phrase in descriptors or any(x in descriptors for x in SAME_STATES.get(phrase, ()))
+
+
+def span_descriptors(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: Collection[str]) -> tuple[str, ...]:
+    """What a goal's span says of it after its name and the parse did not read: the `descriptors` (words and
+    states the house's captions describe things by) among the words after the head, up to the next word run
+    that names a recorded object (a modifier there is that object's: "sharing quarters with the turquoise
+    shelving unit"). A describing word followed by a run of content words is that run's when the run names a
+    recorded object (`tau_ground`, as a misread head's words must) and the goal's own otherwise, a frame noun
+    ("described as teal", "in a closed state", "of the ivory kind", "(the teal wool variety)"). Words of the
+    head, its attributes, its anchors (but frames: `_frames`) and its room are never taken; nothing before the
+    head is (the parser reads modifiers there)."""
+    t = sg.target
+    ws = [w.strip("'") for w in _WORD.findall(sg.text.lower().replace("\u2019", "'"))]
+    head = _WORD.findall(t.head.lower())
+    at = next((i + len(head) for i in range(len(ws) - len(head), -1, -1)
+               if head and ws[i : i + len(head)] == head), None)  # the head's last mention: the name itself
+    if at is None:
+        return ()
+    frames = _frames(verifier, t, vocab)
+    anchors = [x for r in t.relations if r not in frames for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
+    have = {w for x in (t.head, *t.attributes, *anchors, sg.room or "") for w in _WORD.findall(x)}
+    have |= {w for a in t.attributes for x in SAME_STATES.get(a, ()) for w in x.split()}
+
+    def names_something(run: Sequence[str]) -> bool:
+        return bool(run) and _best(verifier, candidate_heads(" ".join(run)), vocab)[1] >= verifier.p.tau_ground
+
+    out, i = [], at
+    while i < len(ws):
+        pair = " ".join(ws[i : i + 2]).replace("-", " ") if i + 1 < len(ws) else ""
+        one = ws[i].replace("-", " ")
+        phrase = pair if pair and _described(pair, descriptors) else one if _described(one, descriptors) else None
+        if phrase is None:
+            if not _closed(ws[i]) and names_something(_run_from(ws, i)):
+                break  # another object's name: what follows is its
+            i += 1
+            continue
+        j = i + len(phrase.split())
+        while j < len(ws) and (_closed(ws[j]) or _described(ws[j].replace("-", " "), descriptors)):
+            j += 1  # past the other describing words ("the teal wool variety")
+        if names_something(_run_from(ws, j)):
+            break  # a modifier of the object named next
+        if not set(phrase.split()) <= have:
+            out.append(phrase)
+            have |= set(phrase.split())
+        i += len(phrase.split())
+    return tuple(out)
+
+
+def _frames(verifier, t: Target, vocab: Sequence[str]) -> tuple:
+    """t's relations "in" something no recorded name reaches (`tau_ground`): a frame read as a container ("in a
+    closed state", "in an empty state"), whose describing words are the goal's."""
+    return tuple(r for r in t.relations if r.type == "in" and not r.anchor.relations
+                 and float(name_fit(verifier, [r.anchor.head], vocab)[0]) < verifier.p.tau_ground)
+
+
+def _run_from(ws: Sequence[str], i: int) -> tuple[str, ...]:
+    """The run of content words starting at ws[i] (empty when ws[i] is closed-class or past the end)."""
+    run = []
+    while i < len(ws) and not _closed(ws[i]):
+        run.append(ws[i])
+        i += 1
+    return tuple(run)
+
+
 def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str], captions: str | None = None,
-                    descriptors: Collection[str] = ()) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
+                    descriptors: Collection[str] = (), described: bool = False) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
     """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones).
     descriptors: the words the house's captions describe things by (`caption_descriptors`), which a remark
-    dropped gives the goal before it."""
+    dropped gives the goal before it, and (described) each kept goal those its span says of it after its name
+    (`span_descriptors`)."""
     if not vocab:
         return tuple(subgoals), ()
     kept, dropped = [], []
@@ -261,6 +337,13 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
                     kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(
                         prev, attributes=prev.attributes + tuple(dict.fromkeys(said_here))))
         else:
+            more = span_descriptors(verifier, g, vocab, descriptors) if described and descriptors else ()
+            if more:  # and a frame whose words they were is no relation ("in a full state")
+                t = g.target
+                gone = [r for r in _frames(verifier, t, vocab) if set(r.anchor.attributes) <= set(t.attributes + more)]
+                g = dataclasses.replace(g, target=dataclasses.replace(
+                    t, attributes=t.attributes + more, phrase=" ".join([*more, t.phrase]),
+                    relations=tuple(r for r in t.relations if r not in gone)))
             kept.append(g)
     return tuple(kept), tuple(dropped)
 
@@ -270,15 +353,19 @@ _STATE_CLAUSE = re.compile(r"\bthat is ([a-z]+(?: on| off)?)\b")
 
 def caption_descriptors(name_of: dict[str, str]) -> frozenset[str]:
     """The words and states a house's captions describe its objects by: from each caption phrase and the name
-    it gave ('lacquered ivory shelf unit' -> shelf unit), the words before the name and the state after "that
-    is" ("a drying rack that is full", "switched on"), less closed-class words. Only what the captioner said."""
-    out = set()
+    it gave ('lacquered ivory shelf unit' -> shelf unit), the words before the name, the state after "that
+    is" ("a drying rack that is full", "switched on") and the words of what holds it ("in a glazed planter"),
+    less closed-class words, numbers, readings and the words of the names. Only what the captioner said."""
+    out, names = set(), {w for n in name_of.values() for w in _WORD.findall(n.lower())}
     for phrase, name in name_of.items():
         low = phrase.lower()
         at = low.find(name)
         if at > 0:
             out.update(w for w in _WORD.findall(low[:at]) if not _closed(w))
         out.update(m.group(1) for m in _STATE_CLAUSE.finditer(low[at + len(name):] if at >= 0 else low))
+        chunks = descriptors(Perceived(name, low)) if at >= 0 else ()
+        out.update(w for c in chunks if not _NUMBER_IN.search(c) and c not in SAME_STATES for w in _WORD.findall(c)
+                   if w not in names and w not in _READING_WORDS)
     return frozenset(w for w in out if not _closed(w))
 
 
@@ -287,9 +374,9 @@ class MemoryGrounder:
     grounder(episode, subgoals) -> subgoals, each (scene, parse) grounded once. `dropped[episode id]`
     keeps the phrases it dropped."""
 
-    def __init__(self, verifier, bank, scenes):
+    def __init__(self, verifier, bank, scenes, described: bool = True):
         by_name = {s.name: s for s in scenes}
-        self.verifier, self.dropped, self._done = verifier, {}, {}
+        self.verifier, self.described, self.dropped, self._done = verifier, described, {}, {}
         rec = {m.scene: recorded(m, by_name[m.scene]) for m in bank.metas if m.scene in by_name}
         self.vocab = {k: vocabulary(names) for k, (names, _) in rec.items()}
         self.descriptors = {k: caption_descriptors(name_of) for k, (_, name_of) in rec.items()}
@@ -299,7 +386,8 @@ class MemoryGrounder:
         key = (ep.scene, subgoals)
         if key not in self._done:
             self._done[key] = ground_subgoals(self.verifier, subgoals, self.vocab.get(ep.scene, ()),
-                                              self.captions.get(ep.scene), self.descriptors.get(ep.scene, ()))
+                                              self.captions.get(ep.scene), self.descriptors.get(ep.scene, ()),
+                                              self.described)
         kept, dropped = self._done[key]
         if dropped:
             self.dropped[ep.id] = dropped

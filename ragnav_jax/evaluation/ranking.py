@@ -275,7 +275,8 @@ def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
 def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, verifier: Verifier | None):
     """What turns a parse into the subgoals run (evaluation/grounding.py: the tagger, the memory grounder, then
     the sensor reader), or None."""
-    ground = MemoryGrounder(verifier, bank, scenes) if cfg.eval.ground and verifier is not None else None
+    ground = (MemoryGrounder(verifier, bank, scenes, cfg.eval.ground_described)
+              if cfg.eval.ground and verifier is not None else None)
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
