@@ -559,7 +559,8 @@ class EvalConfig:
     ground: bool = True  # parsed goals are grounded in the memory's names before retrieval: misread heads repaired,
     # goals naming nothing it knows dropped (evaluation/grounding.py)
     ground_described: bool = True  # grounding also gives each goal the words its span says of it after its name
-    # that the house's captions describe things by ("the work light described as teal"; grounding.span_descriptors)
+    # that the house's captions describe things by ("the work light described as teal"), and the room named there
+    # where it has none ("whose berth is the laundry room"; grounding.after_name)
     tagger: bool = True  # the parse is reconciled with the instruction tagger before grounding: remarks it is sure
     # name no goal dropped, goal phrases it is sure of and the parse missed added (language/tagger.py)
     tagger_file: str = ""  # tagger.npz (`ragnav fit-tagger`; "" = ragnav_jax/data/tagger.npz)

@@ -9,12 +9,12 @@ from hypothesis import strategies as st
 
 from ragnav_jax.config import load_config
 from ragnav_jax.evaluation.grounding import (
+    after_name,
     candidate_heads,
     content_runs,
     ground_subgoal,
     ground_subgoals,
     name_fit,
-    span_descriptors,
 )
 from ragnav_jax.evaluation.verify import Verifier
 from ragnav_jax.language.lexicon import CLOSED_CLASS
@@ -290,10 +290,22 @@ DESCRIBED = frozenset({"teal", "turquoise", "wool", "closed", "empty", "switched
     ("the sofa described as mauve", "sofa", ()),  # no caption of the house says it
 ])
 def test_describing_words_the_span_says_after_the_name_are_the_goals(verifier, text, head, want):
-    assert span_descriptors(verifier, goal(head, text), VOCAB, DESCRIBED) == want
+    assert after_name(verifier, goal(head, text), VOCAB, DESCRIBED)[0] == want
 
 
-def test_described_goals_take_their_span_descriptors_once(verifier):
+@pytest.mark.parametrize("text,room,want", [
+    ("the sofa whose berth is the laundry room", None, "laundry room"),
+    ("the closed sofa, somewhere in the garage", None, "garage"),
+    ("the sofa near the spice rack in the kitchen", None, None),  # after another object's name: that object's
+    ("the sofa in the room with the window", None, None),  # "room" alone names none
+    ("the sofa in the same room as the kettle", None, None),  # nor does a relation's room
+    ("the sofa whose berth is the laundry room", "den", None),  # a goal with a room keeps it
+])
+def test_a_room_the_span_names_after_the_name_is_the_goals_where_it_has_none(verifier, text, room, want):
+    assert after_name(verifier, dataclasses.replace(goal("sofa", text), room=room), VOCAB, DESCRIBED)[1] == want
+
+
+def test_described_goals_take_what_their_span_says_after_the_name_once(verifier):
     sgs = (goal("dehumidifier", "the dehumidifier described as teal"),
            goal("teal sofa", "the sofa, teal and closed", "sofa", ("teal",)))
     kept, _ = ground_subgoals(verifier, sgs, VOCAB, "a teal sofa", DESCRIBED, described=True)
@@ -317,13 +329,13 @@ text_words = st.sampled_from(["the", "a", "in", "state", "described", "as", "tea
 
 @settings(max_examples=60, deadline=None)
 @given(before=st.lists(text_words, max_size=4), after=st.lists(text_words, max_size=8))
-def test_span_descriptors_are_caption_words_said_after_the_name(verifier, before, after):
+def test_describing_words_after_the_name_are_caption_words(verifier, before, after):
     """Whatever the words: only what the captions say (or a state said the same way), only words after the
     head's last mention, never the head's own or an attribute already read, each once."""
     text = " ".join([*before, "the", "bonsai", "tree", *after])
-    got = span_descriptors(verifier, goal("bonsai tree", text, attrs=("closed",)), VOCAB, DESCRIBED)
+    got, _ = after_name(verifier, goal("bonsai tree", text, attrs=("closed",)), VOCAB, DESCRIBED)
     assert len(set(got)) == len(got)
     for d in got:
         assert d in DESCRIBED or d.replace("-", " ") in DESCRIBED or d in ("switched off",)
         assert d != "closed" and all(w in after for w in d.split())
-    assert span_descriptors(verifier, goal("bonsai tree", text), VOCAB, ()) == ()
+    assert after_name(verifier, goal("bonsai tree", text), VOCAB, ())[0] == ()

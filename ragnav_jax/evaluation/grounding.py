@@ -40,11 +40,12 @@ against the memory of the house:
   a room name the memory's names do not reach ("... (open) in the nursery" read as a goal "nursery") gives it
   to the goal before it as its room;
 - a goal takes the words its span says of it after its name that the house's captions describe things by
-  (`span_descriptors`, `eval.ground_described`): "the work light described as teal", "the fruit bowl in an
-  empty state", "the sofa (the teal wool variety)", "the snake plant described as glazed" (a caption's "in a
-  glazed planter"), up to the next run of words that names a recorded object, whose modifiers are its own
-  ("sharing quarters with the turquoise shelving unit"); a relation "in" a frame no name reaches ("in a closed
-  state") gives its words to the goal and goes;
+  (`after_name`, `eval.ground_described`): "the work light described as teal", "the fruit bowl in an empty
+  state", "the sofa (the teal wool variety)", "the snake plant described as glazed" (a caption's "in a glazed
+  planter"), and, where it has no room, the room named there ("whose berth is the laundry room"), up to the
+  next run of words that names a recorded object, whose modifiers are its own ("sharing quarters with the
+  turquoise shelving unit"); a relation "in" a frame no name reaches ("in a closed state") gives its words to
+  the goal and goes;
 - an attribute is dropped when it is only closed-class words, or when it is no descriptive word the
   lexicon knows (`lexicon.is_modifier`: colours, materials, conditions) and no caption of the house's
   memory ever said it ('required' from "no further action is required", 'noted', 'requested');
@@ -76,6 +77,8 @@ NAME_LINKS = frozenset({"of", "and"})
 _WORD = re.compile(r"[a-z0-9]+(?:[-'][a-z0-9]+)*")
 _NUMBER = re.compile(r"^\d+(?:[.,]\d+)?$")
 _NUMBER_IN = re.compile(r"\d")
+_ROOM_RELATIONS = frozenset({"same", "next", "adjacent", "adjoining", "neighbouring", "neighboring", "nearby",
+                             "opposite", "different", "shared", "common"})  # "in the same room as ...": no room's name
 _READING_WORDS = frozenset({"ndvi", "humidity", "c"})  # what a caption's reading says ("with NDVI 0.52", "at 48% humidity")
 
 
@@ -228,22 +231,25 @@ def _described(phrase: str, descriptors: Collection[str]) -> bool:
     return phrase in descriptors or any(x in descriptors for x in SAME_STATES.get(phrase, ()))
 
 
-def span_descriptors(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: Collection[str]) -> tuple[str, ...]:
-    """What a goal's span says of it after its name and the parse did not read: the `descriptors` (words and
-    states the house's captions describe things by) among the words after the head, up to the next word run
-    that names a recorded object (a modifier there is that object's: "sharing quarters with the turquoise
-    shelving unit"). A describing word followed by a run of content words is that run's when the run names a
-    recorded object (`tau_ground`, as a misread head's words must) and the goal's own otherwise, a frame noun
-    ("described as teal", "in a closed state", "of the ivory kind", "(the teal wool variety)"). Words of the
-    head, its attributes, its anchors (but frames: `_frames`) and its room are never taken; nothing before the
-    head is (the parser reads modifiers there)."""
+def after_name(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: Collection[str]) -> tuple[tuple[str, ...], str | None]:
+    """What a goal's span says of it after its name and the parse did not read: (describing words, room or None).
+
+    Read from the words after the head up to the next run of words that names a recorded object (what follows
+    is that object's: "sharing quarters with the turquoise shelving unit"): the `descriptors` (words and states
+    the house's captions describe things by) and, where the goal has no room, the first room name
+    (`lexicon.is_room_phrase`: "whose berth is the laundry room", "somewhere in the garage"). A describing word
+    followed by a run of content words is that run's when the run names a recorded object (`tau_ground`, as a
+    misread head's words must) and the goal's own otherwise, a frame noun ("described as teal", "in a closed
+    state", "of the ivory kind", "(the teal wool variety)"). Words of the head, its attributes, its anchors (but
+    frames: `_frames`) and its room are never taken; nothing before the head is (the parser reads modifiers
+    there)."""
     t = sg.target
     ws = [w.strip("'") for w in _WORD.findall(sg.text.lower().replace("\u2019", "'"))]
     head = _WORD.findall(t.head.lower())
     at = next((i + len(head) for i in range(len(ws) - len(head), -1, -1)
                if head and ws[i : i + len(head)] == head), None)  # the head's last mention: the name itself
     if at is None:
-        return ()
+        return (), None
     frames = _frames(verifier, t, vocab)
     anchors = [x for r in t.relations if r not in frames for x in (r.anchor.phrase, *_anchor_phrases(r.anchor))]
     have = {w for x in (t.head, *t.attributes, *anchors, sg.room or "") for w in _WORD.findall(x)}
@@ -252,13 +258,21 @@ def span_descriptors(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: C
     def names_something(run: Sequence[str]) -> bool:
         return bool(run) and _best(verifier, candidate_heads(" ".join(run)), vocab)[1] >= verifier.p.tau_ground
 
-    out, i = [], at
+    out, room, i = [], None, at
     while i < len(ws):
         pair = " ".join(ws[i : i + 2]).replace("-", " ") if i + 1 < len(ws) else ""
         one = ws[i].replace("-", " ")
         phrase = pair if pair and _described(pair, descriptors) else one if _described(one, descriptors) else None
         if phrase is None:
-            if not _closed(ws[i]) and names_something(_run_from(ws, i)):
+            run = _run_from(ws, i)
+            named = next((run[:k] for k in range(len(run), 0, -1)
+                          if is_room_phrase(run[:k]) and run[:k] != ("room",) and not set(run[:k - 1]) & _ROOM_RELATIONS),
+                         None)
+            # a room name ("room" alone names none, nor does "the same room" or "the next room")
+            if named and sg.room is None and room is None and not set(named) & have:
+                room, i = " ".join(named), i + len(named)
+                continue
+            if run and names_something(run):
                 break  # another object's name: what follows is its
             i += 1
             continue
@@ -271,7 +285,7 @@ def span_descriptors(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: C
             out.append(phrase)
             have |= set(phrase.split())
         i += len(phrase.split())
-    return tuple(out)
+    return tuple(out), room
 
 
 def _frames(verifier, t: Target, vocab: Sequence[str]) -> tuple:
@@ -294,8 +308,8 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
                     descriptors: Collection[str] = (), described: bool = False) -> tuple[tuple[Subgoal, ...], tuple[str, ...]]:
     """Every subgoal grounded (`ground_subgoal`); returns (kept subgoals, phrases of the dropped ones).
     descriptors: the words the house's captions describe things by (`caption_descriptors`), which a remark
-    dropped gives the goal before it, and (described) each kept goal those its span says of it after its name
-    (`span_descriptors`)."""
+    dropped gives the goal before it, and (described) each kept goal those its span says of it after its name,
+    and the room it names there where it has none (`after_name`)."""
     if not vocab:
         return tuple(subgoals), ()
     kept, dropped = [], []
@@ -337,13 +351,15 @@ def ground_subgoals(verifier, subgoals: Sequence[Subgoal], vocab: Sequence[str],
                     kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(
                         prev, attributes=prev.attributes + tuple(dict.fromkeys(said_here))))
         else:
-            more = span_descriptors(verifier, g, vocab, descriptors) if described and descriptors else ()
+            more, room = after_name(verifier, g, vocab, descriptors) if described else ((), None)
             if more:  # and a frame whose words they were is no relation ("in a full state")
                 t = g.target
                 gone = [r for r in _frames(verifier, t, vocab) if set(r.anchor.attributes) <= set(t.attributes + more)]
                 g = dataclasses.replace(g, target=dataclasses.replace(
                     t, attributes=t.attributes + more, phrase=" ".join([*more, t.phrase]),
                     relations=tuple(r for r in t.relations if r not in gone)))
+            if room is not None:
+                g = dataclasses.replace(g, room=room)
             kept.append(g)
     return tuple(kept), tuple(dropped)
 
