@@ -265,10 +265,7 @@ def after_name(verifier, sg: Subgoal, vocab: Sequence[str], descriptors: Collect
         phrase = pair if pair and _described(pair, descriptors) else one if _described(one, descriptors) else None
         if phrase is None:
             run = _run_from(ws, i)
-            named = next((run[:k] for k in range(len(run), 0, -1)
-                          if is_room_phrase(run[:k]) and run[:k] != ("room",) and not set(run[:k - 1]) & _ROOM_RELATIONS),
-                         None)
-            # a room name ("room" alone names none, nor does "the same room" or "the next room")
+            named = _room_name(run)
             if named and sg.room is None and room is None and not set(named) & have:
                 room, i = " ".join(named), i + len(named)
                 continue
@@ -293,6 +290,13 @@ def _frames(verifier, t: Target, vocab: Sequence[str]) -> tuple:
     closed state", "in an empty state"), whose describing words are the goal's."""
     return tuple(r for r in t.relations if r.type == "in" and not r.anchor.relations
                  and float(name_fit(verifier, [r.anchor.head], vocab)[0]) < verifier.p.tau_ground)
+
+
+def _room_name(run: Sequence[str]) -> tuple[str, ...] | None:
+    """The longest start of a run of words that names a room ("laundry room" of "laundry room today"), or None:
+    "room" alone names none, nor does a relation's "same room" or "next room"."""
+    return next((tuple(run[:k]) for k in range(len(run), 0, -1) if is_room_phrase(run[:k]) and tuple(run[:k]) != ("room",)
+                 and not set(run[: k - 1]) & _ROOM_RELATIONS), None)
 
 
 def _run_from(ws: Sequence[str], i: int) -> tuple[str, ...]:
