@@ -814,6 +814,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_w": ("phrasings_w", "w"),
                     "unseen_aa": ("phrasings_aa", "aa"),
                     "unseen_ab": ("phrasings_ab", "ab"),
+                    "unseen_ac": ("phrasings_ac", "ac"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
