@@ -568,6 +568,8 @@ class EvalConfig:
     # fitted with the tagger on seen-split houses, `ragnav fit-tagger`)
     tagger_clauses: bool = True  # a goal the tagger adds is what the rule parser reads in its own clause (its
     # attributes, room, relations, sensors), not the bare tagged phrase (language/tagger.py: reconcile)
+    tagger_anchors: bool = True  # an anchor the parse read as a goal and the tagger drops is the anchor (near) of the
+    # goal before, where the parse gave that one none ("the workbench immediately adjoining the work lamp")
     sensor_reader: bool = True  # after the tagger and grounding, each goal's sensor comparison read again by the
     # learned reader where it is sure: its direction turned, a missed superlative or bound added (language/sensor_reader.py)
     sensor_reader_file: str = ""  # sensor_reader.npz (`ragnav fit-sensor-reader`; "" = ragnav_jax/data/sensor_reader.npz)

@@ -36,7 +36,7 @@ from ragnav_jax.language.tagger import (
     training_examples,
     words,
 )
-from ragnav_jax.language.types import SensorConstraint, Subgoal, Target
+from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 SENTENCE = "Go to the red mug near the lamp, then the sofa."
 
@@ -341,6 +341,22 @@ def test_a_dropped_goal_of_describing_words_gives_them_and_its_room_to_the_goal_
     assert dropped == ("lacquered",)
     assert [s.target.head for s in reconcile(text, (rack, lacquered, lamp), p, clauses=True)[0]] == [
         "magazine rack", "lamp"]  # words no caption says: dropped as before, nothing given
+
+
+def test_an_anchor_read_as_a_goal_is_the_anchor_of_the_goal_before():
+    """'the workbench immediately adjoining the work lamp': the relation's words are new to the parser, which reads
+    two goals; the tagger is sure the lamp is an anchor: it goes, and is the workbench's anchor (near) unless the
+    workbench has one already."""
+    text = "Go to the workbench immediately adjoining the work lamp, then the sofa."
+    bench, lamp, sofa = (Subgoal(i, Target(h, h)) for i, h in enumerate(("workbench", "work lamp", "sofa")))
+    p = probs_for(text, {"workbench": BT, "work": BA, "lamp": IA, "sofa": BT})
+    out, dropped, _ = reconcile(text, (bench, lamp, sofa), p)
+    assert [(s.target.head, s.target.relations) for s in out] == [
+        ("workbench", (Relation("near", Target("work lamp", "work lamp")),)), ("sofa", ())]
+    assert dropped == ("work lamp",)
+    held = dataclasses.replace(bench, target=Target("workbench", "workbench", (), (Relation("on", Target("rug", "rug")),)))
+    assert reconcile(text, (held, lamp, sofa), p)[0][0] == held  # it has one: unchanged
+    assert reconcile(text, (bench, lamp, sofa), p, anchors=False)[0][0] == bench  # eval.tagger_anchors=false
 
 
 def test_a_goal_the_parse_made_an_anchor_of_is_a_goal_where_the_tagger_is_sure():

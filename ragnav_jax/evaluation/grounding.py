@@ -464,10 +464,10 @@ class TaggedReading:
     instruction names a goal). `dropped[episode id]` keeps the phrases the tagger and the
     grounder dropped; `added[episode id]` the goal phrases the tagger added."""
 
-    def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False):
+    def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False, anchors: bool = True):
         texts = sorted({ep.instruction for ep in episodes})
         self.probs = dict(zip(texts, tagger.word_probs(texts)))
-        self.conf, self.then, self.clauses, self.added, self._dropped = conf, then, clauses, {}, {}
+        self.conf, self.then, self.clauses, self.anchors, self.added, self._dropped = conf, then, clauses, anchors, {}, {}
 
     def __call__(self, ep, subgoals):
         from ragnav_jax.language.tagger import reconcile
@@ -475,7 +475,7 @@ class TaggedReading:
         known = getattr(self.then, "vocab", {}).get(ep.scene, ())  # the names the house's memory recorded
         described = getattr(self.then, "descriptors", {}).get(ep.scene, ()) if self.clauses else ()
         subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf,
-                                            self.clauses, known, described)
+                                            self.clauses, known, described, self.anchors)
         if dropped:
             self._dropped[ep.id] = dropped
         if added:
@@ -485,7 +485,7 @@ class TaggedReading:
             # phrases the tagger reads alone, each from its own clause ("can the robot get itself to the appliance
             # whose temperature reading reads 90 or anything above it?")
             alone, _, added = reconcile(ep.instruction, (), self.probs[ep.instruction], self.conf, True, known,
-                                        described)
+                                        described, self.anchors)
             out = self.then(ep, alone) if self.then is not None else alone
             if out:
                 self.added[ep.id] = added

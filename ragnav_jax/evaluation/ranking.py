@@ -280,7 +280,8 @@ def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, 
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
-        ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses)
+        ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses,
+                               anchors=cfg.eval.tagger_anchors)
     if cfg.eval.sensor_reader and spec.reads:
         reader = load_reader(cfg.eval.sensor_reader_file)
         ground = SensorReading(reader, cfg.eval.sensor_reader_conf or reader.meta["revise"]["conf"], inner=ground)
