@@ -87,3 +87,12 @@ def test_episodes_are_deterministic_and_resolve(split, small_scene):
             if sg.location is not None:  # the hint's numbers are in the text, x then y
                 nums = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", sg.text)]
                 assert nums[-2:] == [sg.location.x, sg.location.y], sg.text
+
+
+def test_the_grammar_helpers_the_sets_share():
+    from ragnav_jax.language.template_text import both, hyphenated, is_are, plural
+
+    assert [plural(h) for h in ("drums", "shelves", "cactus", "glass", "lamp", "chaise longue")] == [
+        True, True, False, False, False, False]
+    assert (is_are("drums"), is_are("bonsai tree")) == ("are", "is")
+    assert hyphenated(["switched on", "open"]) == "switched-on open" and both(["teal", "wool"]) == "teal and wool"

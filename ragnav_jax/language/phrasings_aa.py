@@ -75,6 +75,8 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import attributes_and_states, number_words
+from ragnav_jax.language.template_text import hyphenated as _hyphen
+from ragnav_jax.language.template_text import plural as _plural
 from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
@@ -84,16 +86,6 @@ from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Targe
 
 def _and(words: list[str]) -> str:
     return " and ".join(words)
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
-
-
-def _plural(head: str) -> bool:
-    """'drums', 'shelves' are plural; 'cactus', 'glass', 'lamp' are not."""
-    last = head.split()[-1]
-    return last.endswith("s") and not last.endswith(("ss", "us", "is"))
 
 
 def _ones(head: str) -> str:

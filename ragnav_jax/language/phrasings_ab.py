@@ -76,30 +76,16 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import ONES, TENS, attributes_and_states, number_words
+from ragnav_jax.language.template_text import both as _both
+from ragnav_jax.language.template_text import hyphenated as _hyphen
+from ragnav_jax.language.template_text import is_are as _is
 from ragnav_jax.language.template_text import listed as _listed
+from ragnav_jax.language.template_text import plural as _plural
 from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
 # ----------------------------------------------------------------------------------------------------
 # Small helpers of this set's own
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
-
-
-def _both(words: list[str]) -> str:
-    return " and ".join(words)
-
-
-def _plural(head: str) -> bool:
-    """'drums', 'shelves' take 'are'; 'cactus', 'glass', 'lamp' take 'is'."""
-    last = head.split()[-1]
-    return last.endswith("s") and not last.endswith(("ss", "us", "is"))
-
-
-def _is(head: str) -> str:
-    return "are" if _plural(head) else "is"
 
 
 def _its(head: str) -> str:

@@ -65,6 +65,7 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import attributes_and_states as split_attributes
+from ragnav_jax.language.template_text import hyphenated as _hyphen
 from ragnav_jax.language.template_text import number_words
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
@@ -75,10 +76,6 @@ from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Targe
 _ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen")
 _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
 
 
 def _tidy(s: str) -> str:

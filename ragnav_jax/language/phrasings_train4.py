@@ -67,6 +67,7 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import attributes_and_states, number_words
+from ragnav_jax.language.template_text import hyphenated as _hyphen
 from ragnav_jax.language.template_text import listed as _listed
 from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
@@ -78,10 +79,6 @@ _ONES = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight",
          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen")
 _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety")
 _DIGIT_WORDS = ("nought", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
 
 
 def _and(items: list[str]) -> str:

@@ -67,6 +67,7 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import attributes_and_states, number_words
+from ragnav_jax.language.template_text import hyphenated as _hyphen
 from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
@@ -80,10 +81,6 @@ _TENS = ("", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eigh
 
 def _head_words(t: Target) -> str:
     return t.phrase[len(t.phrase) - len(t.head):] if t.phrase.endswith(t.head) else t.head
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
 
 
 # ----------------------------------------------------------------------------------------------------

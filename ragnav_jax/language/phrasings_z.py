@@ -70,6 +70,7 @@ import numpy as np
 
 from ragnav_jax.language.episodes import _fmt_value, _pick
 from ragnav_jax.language.template_text import attributes_and_states
+from ragnav_jax.language.template_text import hyphenated as _hyphen
 from ragnav_jax.language.template_text import listed as _listed
 from ragnav_jax.language.template_text import tidy as _tidy
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
@@ -95,10 +96,6 @@ def number_words(n: int) -> str:
         hundreds = "a hundred" if n // 100 == 1 else _ONES[n // 100] + " hundred"
         return hundreds + (" and " + number_words(rest) if rest else "")
     return str(n)
-
-
-def _hyphen(states: list[str]) -> str:
-    return " ".join(s.replace(" ", "-") for s in states)
 
 
 def _article(word: str) -> str:

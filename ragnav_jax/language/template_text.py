@@ -59,3 +59,24 @@ def listed(rng, res: list[str]) -> str:
     if any("," in r for r in res):
         return "; ".join(res[:-1]) + "; and " + res[-1]
     return ", ".join(res[:-1]) + _pick(rng, (" and ", ", and ")) + res[-1]
+
+
+def hyphenated(states: list[str]) -> str:
+    """States as one modifier before a noun: ['switched on', 'open'] -> 'switched-on open'."""
+    return " ".join(s.replace(" ", "-") for s in states)
+
+
+def both(words: list[str]) -> str:
+    """Words joined by 'and': ['teal', 'wool'] -> 'teal and wool'."""
+    return " and ".join(words)
+
+
+def plural(head: str) -> bool:
+    """'drums', 'shelves' are plural; 'cactus', 'glass', 'lamp' are not."""
+    last = head.split()[-1]
+    return last.endswith("s") and not last.endswith(("ss", "us", "is"))
+
+
+def is_are(head: str) -> str:
+    """The verb 'to be' agreeing with a head noun ('are' for 'drums', 'is' for 'lamp')."""
+    return "are" if plural(head) else "is"
