@@ -69,7 +69,7 @@ from collections.abc import Collection, Sequence
 import numpy as np
 
 from ragnav_jax.evaluation.verify import Perceived, descriptors, recorded, said, vocabulary
-from ragnav_jax.language.lexicon import CLOSED_CLASS, SAME_STATES, is_modifier, is_room_phrase
+from ragnav_jax.language.lexicon import CLOSED_CLASS, ROOM_RELATION_WORDS, SAME_STATES, is_modifier, is_room_phrase
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -77,9 +77,6 @@ NAME_LINKS = frozenset({"of", "and"})
 _WORD = re.compile(r"[a-z0-9]+(?:[-'][a-z0-9]+)*")
 _NUMBER = re.compile(r"^\d+(?:[.,]\d+)?$")
 _NUMBER_IN = re.compile(r"\d")
-_ROOM_RELATIONS = frozenset({"same", "next", "adjacent", "adjoining", "neighbouring", "neighboring", "nearby",
-                             "opposite", "different", "shared", "common"})  # "in the same room as ...": no room's name
-_READING_WORDS = frozenset({"ndvi", "humidity", "c"})  # what a caption's reading says ("with NDVI 0.52", "at 48% humidity")
 
 
 def _closed(word: str) -> bool:
@@ -296,7 +293,7 @@ def _room_name(run: Sequence[str]) -> tuple[str, ...] | None:
     """The longest start of a run of words that names a room ("laundry room" of "laundry room today"), or None:
     "room" alone names none, nor does a relation's "same room" or "next room"."""
     return next((tuple(run[:k]) for k in range(len(run), 0, -1) if is_room_phrase(run[:k]) and tuple(run[:k]) != ("room",)
-                 and not set(run[: k - 1]) & _ROOM_RELATIONS), None)
+                 and not set(run[: k - 1]) & ROOM_RELATION_WORDS), None)
 
 
 def _run_from(ws: Sequence[str], i: int) -> tuple[str, ...]:
@@ -385,7 +382,7 @@ def caption_descriptors(name_of: dict[str, str]) -> frozenset[str]:
         out.update(m.group(1) for m in _STATE_CLAUSE.finditer(low[at + len(name):] if at >= 0 else low))
         chunks = descriptors(Perceived(name, low)) if at >= 0 else ()
         out.update(w for c in chunks if not _NUMBER_IN.search(c) and c not in SAME_STATES for w in _WORD.findall(c)
-                   if w not in names and w not in _READING_WORDS)
+                   if w not in names)
     return frozenset(w for w in out if not _closed(w))
 
 

@@ -96,6 +96,9 @@ ROOM_WORDS = frozenset(
     "bunkroom bedsit kennel garret".split()
 )
 ROOM_SUFFIXES = ("room", "area", "zone", "wing", "space")
+# Words before a room noun that make it a relation's, not a room's name ("in the same room as", "the next room")
+ROOM_RELATION_WORDS = frozenset({"same", "next", "adjacent", "adjoining", "neighbouring", "neighboring", "nearby",
+                                 "opposite", "different", "shared", "common"})
 
 DETERMINERS = frozenset(
     "the a an my our your their his her its this that these those some any whichever whatever".split()
