@@ -815,6 +815,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_aa": ("phrasings_aa", "aa"),
                     "unseen_ab": ("phrasings_ab", "ab"),
                     "unseen_ac": ("phrasings_ac", "ac"),
+                    "unseen_ad": ("phrasings_ad", "ad"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
