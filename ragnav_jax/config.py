@@ -570,6 +570,12 @@ class EvalConfig:
     # attributes, room, relations, sensors), not the bare tagged phrase (language/tagger.py: reconcile)
     tagger_anchors: bool = True  # an anchor the parse read as a goal and the tagger drops is the anchor (near) of the
     # goal before, where the parse gave that one none ("the workbench immediately adjoining the work lamp")
+    clause_anchors: bool = True  # a goal the tagger finds in place and the parse gave no relation takes the anchor the
+    # tagger finds in its clause, and an anchor's relation (here and above) is the one the words before it say,
+    # read by the encoder against the lexicon's relation phrases, not always near (grounding.RelationWords)
+    likely_anchors: bool = True  # a parsed goal whose every occurrence the tagger finds likelier an anchor's than not
+    # (tagger.ADD_CONF) is an anchor read as a goal, not only where it is sure (eval.tagger_conf): on every
+    # development set no true goal's words are, while two thirds of the anchors read as goals are
     sensor_reader: bool = True  # after the tagger and grounding, each goal's sensor comparison read again by the
     # learned reader where it is sure: its direction turned, a missed superlative or bound added (language/sensor_reader.py)
     sensor_reader_file: str = ""  # sensor_reader.npz (`ragnav fit-sensor-reader`; "" = ragnav_jax/data/sensor_reader.npz)

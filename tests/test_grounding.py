@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from ragnav_jax.config import load_config
 from ragnav_jax.evaluation.grounding import (
+    RelationWords,
     after_name,
     candidate_heads,
     content_runs,
@@ -17,6 +18,7 @@ from ragnav_jax.evaluation.grounding import (
     name_fit,
 )
 from ragnav_jax.evaluation.verify import Verifier
+from ragnav_jax.language.episodes import NEAR_TYPES
 from ragnav_jax.language.lexicon import CLOSED_CLASS
 from ragnav_jax.language.parser import parse_instruction
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
@@ -339,3 +341,20 @@ def test_describing_words_after_the_name_are_caption_words(verifier, before, aft
         assert d in DESCRIBED or d.replace("-", " ") in DESCRIBED or d in ("switched off",)
         assert d != "closed" and all(w in after for w in d.split())
     assert after_name(verifier, goal("bonsai tree", text), VOCAB, ())[0] == ()
+
+
+@pytest.mark.parametrize("words,want", [
+    ("in the same quarters as", {"in_room_with"}), ("under the same roof as", {"in_room_with"}),
+    ("sharing a room with", {"in_room_with"}), ("next door to", set(NEAR_TYPES)),
+    ("cheek by jowl with", set(NEAR_TYPES)), ("carrying", {"with"}), ("", {"near"})])
+def test_relation_words_the_lexicon_lacks_are_read_as_its_nearest_phrase(verifier, words, want):
+    assert RelationWords(verifier)(words.split()) in want
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.sampled_from(["on", "top", "of", "sat", "upon", "near", "the", "room", "with", "bearing", "x"]),
+                max_size=5))
+def test_relation_words_are_read_as_a_type_the_check_tells_apart_and_never_on(verifier, ws):
+    """'on' is left out: a 'with' read as 'on' would turn the relation round."""
+    got = RelationWords(verifier)(ws)
+    assert got in RelationWords.CHECKED and got != "on"

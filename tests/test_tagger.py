@@ -27,6 +27,7 @@ from ragnav_jax.language.tagger import (
     Fillers,
     O,
     augment,
+    clause_anchor,
     filler_word,
     filler_words,
     label_axes,
@@ -357,6 +358,63 @@ def test_an_anchor_read_as_a_goal_is_the_anchor_of_the_goal_before():
     held = dataclasses.replace(bench, target=Target("workbench", "workbench", (), (Relation("on", Target("rug", "rug")),)))
     assert reconcile(text, (held, lamp, sofa), p)[0][0] == held  # it has one: unchanged
     assert reconcile(text, (bench, lamp, sofa), p, anchors=False)[0][0] == bench  # eval.tagger_anchors=false
+    said = []  # with a reader of relation words (eval.clause_anchors), the relation is the one they say
+    out = reconcile(text, (bench, lamp, sofa), p, relation_of=lambda ws: said.append(list(ws)) or "next_to")[0]
+    assert out[0].target.relations == (Relation("next_to", Target("work lamp", "work lamp")),)
+    assert said == [["immediately", "adjoining"]]
+
+
+def test_an_anchor_read_as_a_goal_goes_where_the_tagger_finds_it_likelier_an_anchor_than_not():
+    """'the harp by the cello (that being the one a hop, skip and jump from the music stand)': the parse reads the
+    nested anchor as a goal of its own; the tagger finds it an anchor's (0.7), likelier than not but below conf.
+    With anchor_conf (eval.likely_anchors) it goes; the harp has a relation already, so it is no one's anchor."""
+    text = "Go to the harp by the cello (that being the one a hop, skip and jump from the music stand), then the sofa."
+    harp = Subgoal(0, Target("harp", "harp", (), (Relation("by", Target("cello", "cello")),)))
+    stand, sofa = Subgoal(1, Target("music stand", "music stand")), Subgoal(2, Target("sofa", "sofa"))
+    p = probs_for(text, {"harp": BT, "cello": BA, "music": BA, "stand": IA, "sofa": BT})
+    ws = [w.lower() for w in words(text)]
+    for w, tag in (("music", BA), ("stand", IA)):
+        p[ws.index(w)] = 0.3 / (len(TAGS) - 1)
+        p[ws.index(w), tag] = 0.7
+    assert reconcile(text, (harp, stand, sofa), p)[0] == (harp, stand, sofa)  # not above conf: kept
+    out, dropped, _ = reconcile(text, (harp, stand, sofa), p, anchor_conf=0.5)
+    assert [s.target.head for s in out] == ["harp", "sofa"] and out[0] == harp and dropped == ("music stand",)
+    bare = dataclasses.replace(harp, target=Target("harp", "harp"))  # a goal without one takes it as its anchor
+    out = reconcile(text, (bare, stand, sofa), p, anchor_conf=0.5)[0]
+    assert out[0].target.relations == (Relation("near", Target("music stand", "music stand")),)
+
+
+def test_a_goal_takes_the_anchor_its_clause_names_related_as_the_words_between_say():
+    """'the record player, vintage to look at, in the same quarters as the drum kit': the parse ends the goal at the
+    aside and loses the relation; the tagger finds the drum kit an anchor in the record player's clause, a name the
+    memory recorded: it is the goal's anchor, related as the words between it and the goal say."""
+    text = "Go to the record player, vintage to look at, in the same quarters as the drum kit, then the sofa."
+    sgs = parse_instruction(text).subgoals
+    p = probs_for(text, {"record": BT, "player": IT, "drum": BA, "kit": IA, "sofa": BT})
+    known, said = ("record player", "drum kit", "sofa"), []
+
+    def relation_of(ws):
+        said.append(list(ws))
+        return "in_room_with"
+
+    out = reconcile(text, sgs, p, clauses=True, known=known, relation_of=relation_of)[0]
+    assert [(s.target.head, s.target.relations) for s in out] == [
+        ("record player", (Relation("in_room_with", Target("drum kit", "drum kit")),)), ("sofa", ())]
+    assert said == [["in", "the", "same", "quarters", "as"]]
+    bare = [("record player", ()), ("sofa", ())]
+    # eval.clause_anchors=false; a name the memory never recorded
+    for variant in (dict(known=known), dict(known=("record player", "sofa"), relation_of=relation_of)):
+        assert [(s.target.head, s.target.relations) for s in reconcile(text, sgs, p, clauses=True, **variant)[0]] == bare
+
+
+def test_a_clause_anchor_needs_words_between_and_stops_at_a_line_break():
+    ws = words("the lamp | near the sofa".replace("|", "\n"))
+    p = probs_for("the lamp | near the sofa", {"sofa": BA})
+    assert clause_anchor(ws, p, 2, len(ws), {"sofa"}, lambda w: "near") is None  # another line's
+    ws, p = words("the lamp near the sofa"), probs_for("the lamp near the sofa", {"sofa": BA})
+    assert clause_anchor(ws, p, 2, len(ws), {"sofa"}, lambda w: "near") == Relation("near", Target("sofa", "sofa"))
+    assert clause_anchor(ws, p, 3, len(ws), {"sofa"}, lambda w: "near") is None  # no words between
+    assert clause_anchor(ws, p, 2, len(ws), {"lamp"}, lambda w: "near") is None  # not a recorded name
 
 
 def test_a_goal_the_parse_made_an_anchor_of_is_a_goal_where_the_tagger_is_sure():

@@ -69,7 +69,15 @@ from collections.abc import Collection, Sequence
 import numpy as np
 
 from ragnav_jax.evaluation.verify import Perceived, descriptors, recorded, said, vocabulary
-from ragnav_jax.language.lexicon import CLOSED_CLASS, ROOM_RELATION_WORDS, SAME_STATES, is_modifier, is_room_phrase
+from ragnav_jax.language.episodes import NEAR_TYPES
+from ragnav_jax.language.lexicon import (
+    CLOSED_CLASS,
+    RELATION_PHRASES,
+    ROOM_RELATION_WORDS,
+    SAME_STATES,
+    is_modifier,
+    is_room_phrase,
+)
 from ragnav_jax.language.types import Subgoal, Target
 
 MAX_SPAN = 4  # longest run of words tried as a head
@@ -289,6 +297,29 @@ def _frames(verifier, t: Target, vocab: Sequence[str]) -> tuple:
                  and float(name_fit(verifier, [r.anchor.head], vocab)[0]) < verifier.p.tau_ground)
 
 
+class RelationWords:
+    """The relation a run of words says where the parser does not know them ("cheek by jowl with", "in the same
+    quarters as", "bunking with"): the type of the lexicon's relation phrase (`lexicon.RELATION_PHRASES`, the
+    seen words) nearest them through the encoder, among the types the check tells apart (`CHECKED`); near where
+    there are no words. Called with the words between a goal and an anchor the tagger found for it
+    (`tagger.reconcile`). Nothing is fitted: on the relations of thirteen development sets (Q to AC; 2,269, the
+    words between each goal and its anchor as written) the nearest phrase's type is the check's for 92% (near
+    97%, the same room 98%, with 67%; on, 29 of them, it never reads)."""
+
+    CHECKED = (*NEAR_TYPES, "with", "in_room_with")  # not "on": one thing on another is near it, and a "with" read as
+    # "on" turns the relation round ("the workbench carrying the soldering station")
+
+    def __init__(self, verifier):
+        self.verifier = verifier
+        self.phrases = sorted(p for p, t in RELATION_PHRASES.items() if t in self.CHECKED)
+
+    def __call__(self, words: Sequence[str]) -> str:
+        text = " ".join(words).strip()
+        if not text:
+            return "near"
+        return RELATION_PHRASES[self.phrases[int(np.argmax(self.verifier.cos([text], self.phrases)[0]))]]
+
+
 def _room_name(run: Sequence[str]) -> tuple[str, ...] | None:
     """The longest start of a run of words that names a room ("laundry room" of "laundry room today"), or None:
     "room" alone names none, nor does a relation's "same room" or "next room"."""
@@ -461,10 +492,12 @@ class TaggedReading:
     instruction names a goal). `dropped[episode id]` keeps the phrases the tagger and the
     grounder dropped; `added[episode id]` the goal phrases the tagger added."""
 
-    def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False, anchors: bool = True):
+    def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False, anchors: bool = True,
+                 relation_of=None, anchor_conf: float | None = None):
         texts = sorted({ep.instruction for ep in episodes})
         self.probs = dict(zip(texts, tagger.word_probs(texts)))
         self.conf, self.then, self.clauses, self.anchors, self.added, self._dropped = conf, then, clauses, anchors, {}, {}
+        self.relation_of, self.anchor_conf = relation_of, anchor_conf
 
     def __call__(self, ep, subgoals):
         from ragnav_jax.language.tagger import reconcile
@@ -472,7 +505,8 @@ class TaggedReading:
         known = getattr(self.then, "vocab", {}).get(ep.scene, ())  # the names the house's memory recorded
         described = getattr(self.then, "descriptors", {}).get(ep.scene, ()) if self.clauses else ()
         subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf,
-                                            self.clauses, known, described, self.anchors)
+                                            self.clauses, known, described, self.anchors, self.relation_of,
+                                            self.anchor_conf)
         if dropped:
             self._dropped[ep.id] = dropped
         if added:
@@ -482,7 +516,7 @@ class TaggedReading:
             # phrases the tagger reads alone, each from its own clause ("can the robot get itself to the appliance
             # whose temperature reading reads 90 or anything above it?")
             alone, _, added = reconcile(ep.instruction, (), self.probs[ep.instruction], self.conf, True, known,
-                                        described, self.anchors)
+                                        described, self.anchors, self.relation_of, self.anchor_conf)
             out = self.then(ep, alone) if self.then is not None else alone
             if out:
                 self.added[ep.id] = added

@@ -18,12 +18,12 @@ import jax
 import numpy as np
 
 from ragnav_jax.config import Config
-from ragnav_jax.evaluation.grounding import MemoryGrounder, SensorReading, TaggedReading
+from ragnav_jax.evaluation.grounding import MemoryGrounder, RelationWords, SensorReading, TaggedReading
 from ragnav_jax.evaluation.methods import MethodSpec
 from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.sensor_reader import load_reader
-from ragnav_jax.language.tagger import load_tagger
+from ragnav_jax.language.tagger import ADD_CONF, load_tagger
 from ragnav_jax.language.types import Subgoal
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.pytrees import take
@@ -280,8 +280,10 @@ def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, 
     if cfg.eval.tagger and spec.reads:
         tagger = load_tagger(cfg.eval.tagger_file)
         conf = cfg.eval.tagger_conf or tagger.meta["reconcile"]["conf"]
+        relations = RelationWords(verifier) if cfg.eval.clause_anchors and verifier is not None else None
         ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses,
-                               anchors=cfg.eval.tagger_anchors)
+                               anchors=cfg.eval.tagger_anchors, relation_of=relations,
+                               anchor_conf=ADD_CONF if cfg.eval.likely_anchors else None)
     if cfg.eval.sensor_reader and spec.reads:
         reader = load_reader(cfg.eval.sensor_reader_file)
         ground = SensorReading(reader, cfg.eval.sensor_reader_conf or reader.meta["revise"]["conf"], inner=ground)

@@ -26,7 +26,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import re
-from collections.abc import Collection, Sequence
+from collections.abc import Callable, Collection, Sequence
 from pathlib import Path
 
 import jax
@@ -591,8 +591,54 @@ def clause_descriptors(ws: Sequence[str], tags: Sequence[int], lo: int, hi: int,
     return tuple(out)
 
 
+_ARTICLES = frozenset({"the", "a", "an"})
+_WORD_CHAR = re.compile(r"[a-z0-9]")  # a word, not punctuation
+
+
+def _relation_words(ws: Sequence[str], lo: int, hi: int, most: int = 6) -> list[str]:
+    """The words of ws[lo:hi] that say a relation: after the last punctuation or line break, at most `most` of
+    them, less the articles at either end ("in the same quarters as" of ", vintage to look at, in the same
+    quarters as the")."""
+    run: list[str] = []
+    for w in reversed(ws[lo:hi]):
+        if not _WORD_CHAR.match(w) or w == LINE_BREAK or len(run) == most:
+            break
+        run.insert(0, w)
+    while run and run[-1] in _ARTICLES:
+        run.pop()
+    while run and run[0] in _ARTICLES:
+        run.pop(0)
+    return run
+
+
+def clause_anchor(ws: Sequence[str], probs: np.ndarray, lo: int, hi: int, named: Collection[str],
+                  relation_of: Callable[[Sequence[str]], str]):
+    """The relation a goal's clause ws[lo:hi] (after its tagged phrase, up to the next goal's) says of it, or None:
+    the first phrase there the tagger finds likelier an anchor's than not, word by word (`ADD_CONF`), before any
+    line break, whose last word is a name the house's memory recorded or a name's last word (`named`), with words
+    between it and the goal; its relation is the one `relation_of` reads in those words (`_relation_words`)."""
+    from ragnav_jax.language.parser import split_noun_phrase
+    from ragnav_jax.language.types import Relation, Target
+
+    anchor = probs[:, BA] + probs[:, IA] if len(probs) else np.zeros(0)
+    i = lo
+    while i < hi and ws[i] != LINE_BREAK and not (anchor[i] > ADD_CONF and probs[i, BA] >= probs[i, IA]):
+        i += 1
+    while i < hi and ws[i] in _ARTICLES:
+        i += 1
+    j = i
+    while j < hi and anchor[j] > ADD_CONF and (j == i or probs[j, IA] > probs[j, BA]) and _WORD_CHAR.match(ws[j]):
+        j += 1
+    between = _relation_words(ws, lo, i)
+    if j == i or ws[j - 1] not in named or not between:
+        return None
+    attrs, head = split_noun_phrase(ws[i:j])
+    return Relation(relation_of(between), Target(" ".join(ws[i:j]), head, tuple(attrs)))
+
+
 def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False,
-              known: Collection[str] = (), descriptors: Collection[str] = (), anchors: bool = True):
+              known: Collection[str] = (), descriptors: Collection[str] = (), anchors: bool = True,
+              relation_of: Callable[[Sequence[str]], str] | None = None, anchor_conf: float | None = None):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
     is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
 
@@ -601,12 +647,14 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     is dropped when every occurrence of its head's words is O with probability above `conf` (a remark read
     as a goal), unless its head is one of the `known` names or a name's last word (what the house's memory
     calls its objects, "light" of "work light": the memory is evidence the tagger does not have), and when
-    every occurrence is an anchor's (B-A or I-A) above `conf`, known or not (an anchor read as a goal of its
-    own: "the bureau, right next door to the magazine rack"), or some are and the rest are O ("a stride or two
+    every occurrence is an anchor's (B-A or I-A) above `anchor_conf` (default `conf`), known or not (an anchor read
+    as a goal of its own: "the bureau, right next door to the magazine rack", "the harp dawdling by the cello (that
+    being the one a hop, skip and jump from the music stand)"), or some are above `conf` and the rest are O ("a stride or two
     from the switched-off hi-fi speaker": an anchor's clause). A dropped goal that is only `descriptors`
     gives them, and its room, to the goal before ("the magazine rack, lacquered by the look of it, in the
     library"); a dropped anchor is the anchor (near) of the goal before where the parse gave that one none
-    (`anchors`: "the workbench immediately adjoining the work lamp"). A tagged goal phrase that no kept subgoal
+    (`anchors`: "the workbench immediately adjoining the work lamp"), its relation the one `relation_of` reads in
+    the words between them (`grounding.RelationWords`; near without it). A tagged goal phrase that no kept subgoal
     shares a head word with, every word of it likelier a goal's than not (`ADD_CONF`), is added as a bare
     target (attributes and head split as the parser splits a noun phrase) at its place in the instruction (two
     goals read as one), unless its words are all words some kept subgoal accounts for (an anchor, an
@@ -622,8 +670,10 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     tagged phrase to the next goal's) leaves unplaced, if any (`loose_hint`); a goal tagged in place and read
     without a reading takes the one its clause says, if any (`loose_reading`); and a goal tagged in place takes
     the `descriptors` (what the house's captions describe things by) its clause says of it after its phrase
-    and the parse missed ("the freezer (think lilac)", `clause_descriptors`). Everything else is left as
-    parsed: where the two agree on the goals, nothing changes.
+    and the parse missed ("the freezer (think lilac)", `clause_descriptors`); and, with `relation_of`, a goal tagged
+    in place that the parse gave no relation takes the first anchor its clause names after its phrase, related as
+    the words between say (`clause_anchor`: "the record player, vintage to look at, in the same quarters as the
+    drum kit"). Everything else is left as parsed: where the two agree on the goals, nothing changes.
     """
     from ragnav_jax.language.lexicon import CLOSED_CLASS
     from ragnav_jax.language.parser import split_noun_phrase
@@ -643,7 +693,8 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         if not ks:
             occ = [n for n, w in enumerate(stems) if w in head]
             anchor = [probs[n, BA] + probs[n, IA] > conf for n in occ]
-            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in named or all(anchor)
+            likely = [probs[n, BA] + probs[n, IA] > (conf if anchor_conf is None else anchor_conf) for n in occ]
+            if occ and (all(probs[n, O] > conf for n in occ) and sg.target.head not in named or all(likely)
                         or any(anchor) and all(probs[n, O] + probs[n, BA] + probs[n, IA] > conf for n in occ)):
                 dropped.append(sg.target.phrase)
                 if (kept and set(sg.target.head.split()) <= set(descriptors) and not (sg.sensors or sg.location)
@@ -653,13 +704,14 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
                     t = kept[-1].target
                     kept[-1] = dataclasses.replace(kept[-1], room=kept[-1].room or sg.room, target=dataclasses.replace(
                         t, attributes=t.attributes + (sg.target.head,), phrase=f"{sg.target.head} {t.phrase}"))
-                elif anchors and kept and any(anchor) and not kept[-1].target.relations:
+                elif anchors and kept and any(likely) and not kept[-1].target.relations:
                     # an anchor read as a goal of its own is the anchor of the goal before, which the parse left
                     # without one: the relation's words were new to it ("the workbench immediately adjoining the
-                    # work lamp"), so it is the loosest, near
-                    t = kept[-1].target
+                    # work lamp"): the relation is the one the words between say, read by `relation_of`, else near
+                    t, lo = kept[-1].target, ends[-1] if ends[-1] is not None else where[-1] + 1
+                    kind = relation_of(_relation_words(ws, lo, occ[0])) if relation_of is not None and occ else "near"
                     kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(
-                        t, relations=(Relation("near", sg.target),)))
+                        t, relations=(Relation(kind, sg.target),)))
                 continue
             where.append(occ[0] if occ else 0)
             ends.append(None)
@@ -736,6 +788,11 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
                     t = kept[n].target
                     kept[n], hinted = dataclasses.replace(kept[n], target=dataclasses.replace(
                         t, attributes=t.attributes + more, phrase=" ".join([*more, t.phrase]))), True
+            if ends[n] is not None and relation_of is not None and not kept[n].target.relations:
+                rel = clause_anchor(ws, probs, ends[n], max(ends[n], starts[pos + 1]), named, relation_of)
+                if rel is not None:
+                    kept[n], hinted = dataclasses.replace(kept[n], target=dataclasses.replace(
+                        kept[n].target, relations=(rel,))), True
     if not dropped and not added and not hinted:
         return tuple(subgoals), (), ()
     out = tuple(dataclasses.replace(kept[n], index=m) for m, n in enumerate(order))
