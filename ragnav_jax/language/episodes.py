@@ -816,6 +816,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ab": ("phrasings_ab", "ab"),
                     "unseen_ac": ("phrasings_ac", "ac"),
                     "unseen_ad": ("phrasings_ad", "ad"),
+                    "unseen_ae": ("phrasings_ae", "ae"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
