@@ -817,6 +817,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ac": ("phrasings_ac", "ac"),
                     "unseen_ad": ("phrasings_ad", "ad"),
                     "unseen_ae": ("phrasings_ae", "ae"),
+                    "unseen_af": ("phrasings_af", "af"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
