@@ -576,6 +576,10 @@ class EvalConfig:
     likely_anchors: bool = True  # a parsed goal whose every occurrence the tagger finds likelier an anchor's than not
     # (tagger.ADD_CONF) is an anchor read as a goal, not only where it is sure (eval.tagger_conf): on every
     # development set no true goal's words are, while two thirds of the anchors read as goals are
+    tagger_regroup: bool = True  # what the parse put in the wrong place goes where the tagger reads it: a goal phrase it
+    # finds likelier a goal's than not inside an anchor the parse misread (closed-class words in its head: "the bonsai,
+    # and at the last repair unto the easel") is a goal, and that anchor goes; a remark's reading or coordinate hint is
+    # the goal before's ("the appliance (room: garage) with the highest temperature of the lot"; tagger.reconcile)
     sensor_reader: bool = True  # after the tagger and grounding, each goal's sensor comparison read again by the
     # learned reader where it is sure: its direction turned, a missed superlative or bound added (language/sensor_reader.py)
     sensor_reader_file: str = ""  # sensor_reader.npz (`ragnav fit-sensor-reader`; "" = ragnav_jax/data/sensor_reader.npz)

@@ -384,6 +384,45 @@ def test_an_anchor_read_as_a_goal_goes_where_the_tagger_finds_it_likelier_an_anc
     assert out[0].target.relations == (Relation("near", Target("music stand", "music stand")),)
 
 
+def test_a_goal_inside_a_misread_anchor_is_a_goal_where_the_tagger_finds_it_likelier_than_not():
+    """'go first unto the bonsai, and at the last repair unto the easel': the parse reads "last repair unto the easel"
+    as the bonsai's anchor (closed-class words in its head: a misreading); the tagger finds the easel likelier a goal
+    than not, but below conf. With `regroup` (eval.tagger_regroup) the misread anchor goes and the easel is a goal."""
+    text = "Go first unto the bonsai, and at the last repair unto the easel."
+    sgs = parse_instruction(text).subgoals
+    assert [(s.target.head, [r.anchor.head for r in s.target.relations]) for s in sgs] == [
+        ("bonsai", ["last repair unto the easel"])]
+    p = probs_for(text, {"bonsai": BT})
+    p[[w.lower() for w in words(text)].index("easel")] = [0.2, 0.8, 0.0, 0.0, 0.0]
+    assert reconcile(text, sgs, p, conf=0.9, clauses=True)[0] == sgs  # not sure: as parsed
+    out, _, added = reconcile(text, sgs, p, conf=0.9, clauses=True, regroup=True)
+    assert [(s.target.head, s.target.relations) for s in out] == [("bonsai", ()), ("easel", ())] and added == ("easel",)
+    # an anchor read right ("the bonsai near the easel") is no misreading: nothing changes
+    plain = "Go first unto the bonsai near the easel."
+    psgs = parse_instruction(plain).subgoals
+    pp = probs_for(plain, {"bonsai": BT})
+    pp[[w.lower() for w in words(plain)].index("easel")] = [0.2, 0.8, 0.0, 0.0, 0.0]
+    assert reconcile(plain, psgs, pp, conf=0.9, clauses=True, regroup=True)[0] == psgs
+
+
+def test_a_remark_gives_its_reading_and_its_room_to_the_goal_before():
+    """'the appliance (room: garage) with the highest temperature of the lot': the parse reads goals "garage" and
+    "lot" (the latter with the reading); the tagger is sure neither is a goal. With `regroup` the appliance takes the
+    room and the reading; a goal that has its own keeps them."""
+    text = "Go to the sofa, then the appliance (room: garage) with the highest temperature of the lot."
+    sgs = parse_instruction(text).subgoals
+    assert [s.target.head for s in sgs] == ["sofa", "appliance", "garage", "lot"] and sgs[3].sensors
+    p = probs_for(text, {"sofa": BT, "appliance": BT})
+    assert [(s.target.head, s.room, s.sensors) for s in reconcile(text, sgs, p)[0]] == [
+        ("sofa", None, ()), ("appliance", None, ())]
+    out = reconcile(text, sgs, p, regroup=True)[0]
+    assert [(s.target.head, s.room, s.sensors) for s in out] == [
+        ("sofa", None, ()), ("appliance", "garage", sgs[3].sensors)]
+    own = dataclasses.replace(sgs[1], room="pantry", sensors=(SensorConstraint("temperature_c", "min"),))
+    out = reconcile(text, (sgs[0], own, *sgs[2:]), p, regroup=True)[0]
+    assert (out[1].room, out[1].sensors) == (own.room, own.sensors)
+
+
 def test_a_goal_takes_the_anchor_its_clause_names_related_as_the_words_between_say():
     """'the record player, vintage to look at, in the same quarters as the drum kit': the parse ends the goal at the
     aside and loses the relation; the tagger finds the drum kit an anchor in the record player's clause, a name the

@@ -493,11 +493,11 @@ class TaggedReading:
     grounder dropped; `added[episode id]` the goal phrases the tagger added."""
 
     def __init__(self, tagger, episodes, conf: float, then=None, clauses: bool = False, anchors: bool = True,
-                 relation_of=None, anchor_conf: float | None = None):
+                 relation_of=None, anchor_conf: float | None = None, regroup: bool = False):
         texts = sorted({ep.instruction for ep in episodes})
         self.probs = dict(zip(texts, tagger.word_probs(texts)))
         self.conf, self.then, self.clauses, self.anchors, self.added, self._dropped = conf, then, clauses, anchors, {}, {}
-        self.relation_of, self.anchor_conf = relation_of, anchor_conf
+        self.relation_of, self.anchor_conf, self.regroup = relation_of, anchor_conf, regroup
 
     def __call__(self, ep, subgoals):
         from ragnav_jax.language.tagger import reconcile
@@ -506,7 +506,7 @@ class TaggedReading:
         described = getattr(self.then, "descriptors", {}).get(ep.scene, ()) if self.clauses else ()
         subgoals, dropped, added = reconcile(ep.instruction, subgoals, self.probs[ep.instruction], self.conf,
                                             self.clauses, known, described, self.anchors, self.relation_of,
-                                            self.anchor_conf)
+                                            self.anchor_conf, self.regroup)
         if dropped:
             self._dropped[ep.id] = dropped
         if added:
@@ -516,7 +516,8 @@ class TaggedReading:
             # phrases the tagger reads alone, each from its own clause ("can the robot get itself to the appliance
             # whose temperature reading reads 90 or anything above it?")
             alone, _, added = reconcile(ep.instruction, (), self.probs[ep.instruction], self.conf, True, known,
-                                        described, self.anchors, self.relation_of, self.anchor_conf)
+                                        described, self.anchors, self.relation_of, self.anchor_conf,
+                                        self.regroup)
             out = self.then(ep, alone) if self.then is not None else alone
             if out:
                 self.added[ep.id] = added

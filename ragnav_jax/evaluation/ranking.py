@@ -283,7 +283,8 @@ def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, 
         relations = RelationWords(verifier) if cfg.eval.clause_anchors and verifier is not None else None
         ground = TaggedReading(tagger, episodes, conf, then=ground, clauses=cfg.eval.tagger_clauses,
                                anchors=cfg.eval.tagger_anchors, relation_of=relations,
-                               anchor_conf=ADD_CONF if cfg.eval.likely_anchors else None)
+                               anchor_conf=ADD_CONF if cfg.eval.likely_anchors else None,
+                               regroup=cfg.eval.tagger_regroup)
     if cfg.eval.sensor_reader and spec.reads:
         reader = load_reader(cfg.eval.sensor_reader_file)
         ground = SensorReading(reader, cfg.eval.sensor_reader_conf or reader.meta["revise"]["conf"], inner=ground)

@@ -489,6 +489,18 @@ def _without_anchor(t, held: set[str]):
     return t if rels == t.relations else dataclasses.replace(t, relations=rels)
 
 
+def _without_misread_anchor(t, held: set[str], closed: Collection[str]):
+    """The target less every relation, at any depth, whose anchor's head holds all of `held` and a `closed`-class
+    word: a misread anchor that swallowed a goal ("the bonsai near 'last repair unto the easel'")."""
+    def misread(a) -> bool:
+        words = a.head.split()
+        return {_stem(w) for w in words} >= held and bool(set(words) & set(closed))
+
+    rels = tuple(dataclasses.replace(r, anchor=_without_misread_anchor(r.anchor, held, closed)) for r in t.relations
+                 if not misread(r.anchor))
+    return t if rels == t.relations else dataclasses.replace(t, relations=rels)
+
+
 def _clause_subgoal(instruction: str, i: int, end: int | None, held: set[str]):
     """The subgoal the rule parser reads in the clause from word `i` up to word `end` (the next tagged goal
     phrase; None = the end of the instruction) whose head shares a word with the tagged phrase `held`, or
@@ -640,7 +652,8 @@ def clause_anchor(ws: Sequence[str], probs: np.ndarray, lo: int, hi: int, named:
 
 def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: float = 0.9, clauses: bool = False,
               known: Collection[str] = (), descriptors: Collection[str] = (), anchors: bool = True,
-              relation_of: Callable[[Sequence[str]], str] | None = None, anchor_conf: float | None = None):
+              relation_of: Callable[[Sequence[str]], str] | None = None, anchor_conf: float | None = None,
+              regroup: bool = False):
     """The parsed subgoals, less the ones the tagger is sure name no goal, plus the goal phrases the tagger
     is sure of and the parse missed; returns (subgoals, dropped phrases, added phrases).
 
@@ -662,7 +675,11 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     goals read as one), unless its words are all words some kept subgoal accounts for (an anchor, an
     attribute, a room: "the sunroom's lily" is one goal); where they are only an anchor's and the tagger is
     sure of the phrase above `conf`, the anchor goes and the goal is added ("then the fruit bowl, and bring it
-    home with the fish tank").
+    home with the fish tank"); with `regroup`, likelier a goal's than not is enough where the anchor holding its
+    words also holds closed-class words (a misread anchor: "go first unto the bonsai, and at the last repair unto the
+    easel", the bonsai's anchor "last repair unto the easel"), and that anchor goes; and a dropped remark that carries
+    a reading or a coordinate hint gives it to the goal before where that one has neither, and one that names a room
+    its room where it has none ("the appliance (room: garage) with the highest temperature of the lot").
 
     With `clauses`, an added goal is what the rule parser reads in its own clause (`_clause_subgoal`), falling
     back to the bare target; a goal takes as its coordinate hint the numbers the tagger's coordinate head finds
@@ -677,7 +694,7 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
     the words between say (`clause_anchor`: "the record player, vintage to look at, in the same quarters as the
     drum kit"). Everything else is left as parsed: where the two agree on the goals, nothing changes.
     """
-    from ragnav_jax.language.lexicon import CLOSED_CLASS
+    from ragnav_jax.language.lexicon import CLOSED_CLASS, is_room_phrase
     from ragnav_jax.language.parser import split_noun_phrase
     from ragnav_jax.language.types import Relation, Subgoal, Target
 
@@ -714,6 +731,16 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
                     kind = relation_of(_relation_words(ws, lo, occ[0])) if relation_of is not None and occ else "near"
                     kept[-1] = dataclasses.replace(kept[-1], target=dataclasses.replace(
                         t, relations=(Relation(kind, sg.target),)))
+                elif regroup and kept:
+                    # a remark that carries a reading or a coordinate hint gives it to the goal before, and one that
+                    # names a room its room, where that one has none ("the appliance (room: garage) with the highest
+                    # temperature of the lot": the parse's goals "garage" and "lot")
+                    before = kept[-1]
+                    if (sg.sensors or sg.location) and not (before.sensors or before.location):
+                        before = dataclasses.replace(before, sensors=sg.sensors, location=sg.location)
+                    if before.room is None and is_room_phrase(sg.target.head.split()) and not sg.target.relations:
+                        before = dataclasses.replace(before, room=sg.target.head)
+                    kept[-1] = before
                 continue
             where.append(occ[0] if occ else 0)
             ends.append(None)
@@ -737,14 +764,23 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
         if k in taken or not sure[k]:
             continue
         if held[k] <= accounted:
-            if held[k] <= own or min([probs[i, BT]] + [probs[n, IT] for n in range(i + 1, j)]) <= conf:
+            if held[k] <= own:
                 continue
             # a phrase the parse made an anchor of and the tagger is sure is a goal is one ("... then the fruit
             # bowl, and bring it home with the fish tank"): the anchor goes, the goal is added; only where the
             # goal holding the anchor is one the tagger found too, and no misreading ("clients arrive could you
-            # check on the tumble dryer", "coins are stashed at the harp"), which grounding replaces by its anchor
-            less = [dataclasses.replace(sg, target=_without_anchor(sg.target, held[k])) for sg in kept]
-            if less == kept or any(a != b and (e is None or set(b.target.head.split()) & CLOSED_CLASS)
+            # check on the tumble dryer", "coins are stashed at the harp"), which grounding replaces by its anchor.
+            # With `regroup`, a phrase likelier a goal's than not (`sure`) inside an anchor that holds
+            # closed-class words is one too, and that anchor goes ("go first unto the bonsai, and at the last
+            # repair unto the easel": the bonsai's anchor "last repair unto the easel")
+            less, changed = kept, lambda a, b: a != b
+            if min([probs[i, BT]] + [probs[n, IT] for n in range(i + 1, j)]) > conf:
+                less = [dataclasses.replace(sg, target=_without_anchor(sg.target, held[k])) for sg in kept]
+            if less == kept and regroup:  # (a misread head matters only where its own anchor goes)
+                less = [dataclasses.replace(sg, target=_without_misread_anchor(sg.target, held[k], CLOSED_CLASS))
+                        for sg in kept]
+                changed = lambda a, b: len(a.target.relations) != len(b.target.relations)  # noqa: E731
+            if less == kept or any(changed(a, b) and (e is None or set(b.target.head.split()) & CLOSED_CLASS)
                                    for a, b, e in zip(less, kept, ends)):
                 continue
             kept = less
