@@ -818,6 +818,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ad": ("phrasings_ad", "ad"),
                     "unseen_ae": ("phrasings_ae", "ae"),
                     "unseen_af": ("phrasings_af", "af"),
+                    "unseen_ag": ("phrasings_ag", "ag"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
