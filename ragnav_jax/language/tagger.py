@@ -773,15 +773,17 @@ def reconcile(instruction: str, subgoals: Sequence, probs: np.ndarray, conf: flo
             # With `regroup`, a phrase likelier a goal's than not (`sure`) inside an anchor that holds
             # closed-class words is one too, and that anchor goes ("go first unto the bonsai, and at the last
             # repair unto the easel": the bonsai's anchor "last repair unto the easel")
-            less, changed = kept, lambda a, b: a != b
+            less, misread = kept, False
             if min([probs[i, BT]] + [probs[n, IT] for n in range(i + 1, j)]) > conf:
                 less = [dataclasses.replace(sg, target=_without_anchor(sg.target, held[k])) for sg in kept]
-            if less == kept and regroup:  # (a misread head matters only where its own anchor goes)
+            if less == kept and regroup:
                 less = [dataclasses.replace(sg, target=_without_misread_anchor(sg.target, held[k], CLOSED_CLASS))
                         for sg in kept]
-                changed = lambda a, b: len(a.target.relations) != len(b.target.relations)  # noqa: E731
-            if less == kept or any(changed(a, b) and (e is None or set(b.target.head.split()) & CLOSED_CLASS)
-                                   for a, b, e in zip(less, kept, ends)):
+                misread = True
+            # the goals that lose their own anchor (a misread anchor: only a top-level one) must be no misreading
+            lose = [len(a.target.relations) != len(b.target.relations) if misread else a != b for a, b in zip(less, kept)]
+            if less == kept or any(x and (e is None or set(b.target.head.split()) & CLOSED_CLASS)
+                                   for x, b, e in zip(lose, kept, ends)):
                 continue
             kept = less
         phrase = " ".join(ws[i:j])
