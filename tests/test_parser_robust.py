@@ -494,6 +494,12 @@ def test_general_imperatives_and_sequencing(text, heads):
         ("Visit the zorbel and the quillet, in exactly that order.", "strict"),
         ("In this exact order, visit the zorbel and the quillet.", "strict"),
         ("Visit the zorbel and the quillet one after another.", "strict"),
+        # a negation alone is no indifference: it forbids disorder, unless it negates emphasis
+        ("Visit the zorbel, then the quillet; no station out of sequence.", "strict"),
+        ("Visit the zorbel, then the quillet. Do not alter the order.", "strict"),
+        ("Visit the zorbel and the quillet in no particular order.", "free"),
+        ("Visit the zorbel and the quillet; the order is not important.", "free"),
+        ("Visit the zorbel and the quillet; the order makes no difference.", "free"),
     ],
 )
 def test_order_phrases_are_removed(text, order):

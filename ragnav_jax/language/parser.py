@@ -1784,10 +1784,15 @@ def parse_instruction(text: str) -> TaskChain:
 # A remark about the order that the phrase lists above do not know ("order not important", "the order makes no
 # difference to me", "i don't care which one first"): a short clause about the order or about which goes first,
 # naming no object, read by its cue words. Indifference wins over emphasis ("order matters" is strict, "order
-# doesn't matter" is free).
+# doesn't matter" is free). A negation alone is no indifference: it says the order is free only where it negates
+# emphasis ("order not important"); otherwise it forbids disorder ("no station out of sequence", "do not alter
+# order", "no skips, no sequence breaks"), and the order stays as written (round 28+: reading a strict order as free
+# fails the episode, reading a free one as strict only lengthens the route).
 _ORDER_CLAUSE = re.compile(r"[^.;:!?()\[\],⟪⟫]*\b(?:order|sequence|first)\b[^.;:!?()\[\],⟪⟫]*")
 _FREE_CUES = frozenset("any anything either whatever whichever no not never matter difference care mind fussy fussed bothered "
-                       "flexible free choose pick decide optional random irrelevant unimportant up yours".split())
+                       "flexible free choose pick decide optional random irrelevant unimportant up yours particular".split())
+_NEGATIONS = frozenset("no not never".split())
+_EMPHASIS = frozenset("important matters counts".split())
 _STRICT_CUES = frozenset("this that given listed as keep stick follow strict strictly exact exactly same written shown above "
                          "below important matters counts specified numbered sequence order".split())
 _FIRST_CUES = frozenset("which what either whichever".split())
@@ -1807,7 +1812,8 @@ def _order_remarks(s: str) -> tuple[str, bool]:
                                                        and words[k + 1] in ("order", "sequence"))]
         if any(w in ("the", "a", "an", "my", "your", "our") for w in rest):
             return m.group(0)  # "first the kettle", "visit the kettle in any order": goals, not remarks
-        if _FREE_CUES & set(words):
+        cues = _FREE_CUES & set(words)
+        if cues and (cues - _NEGATIONS or _EMPHASIS & set(words)):
             free = True
             return " "
         return " " if _STRICT_CUES & set(words) else m.group(0)
