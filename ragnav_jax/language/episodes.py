@@ -819,6 +819,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ae": ("phrasings_ae", "ae"),
                     "unseen_af": ("phrasings_af", "af"),
                     "unseen_ag": ("phrasings_ag", "ag"),
+                    "unseen_ah": ("phrasings_ah", "ah"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
