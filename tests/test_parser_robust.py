@@ -666,9 +666,54 @@ def _anchors(text: str) -> list[tuple]:
      [("samovar", [("next_to", "shelves", (), [("near", "loom")])])]),
     ("the samovar by the hatstand (the oak one)", [("samovar", [("by", "hatstand", ("oak",), [])])]),
     ("the fern (the one by the window)", [("fern", [("by", "window", (), [])])]),   # no anchor before: the goal's
+    ("the samovar by the hatstand (teal), then the loom", [("samovar", [("by", "hatstand", ("teal",), [])]),
+                                                           ("loom", [])]),
+    ("the samovar (teal) by the hatstand", [("samovar", [("by", "hatstand", (), [])])]),
+    # the anchor's noun said again in the bracket, after words that say nothing or straight away
+    ("the samovar by the hatstand (to be precise, the oak hatstand near the door); the loom",
+     [("samovar", [("by", "hatstand", ("oak",), [("near", "door")])]), ("loom", [])]),
+    ("the samovar by the hatstand (the hatstand by the door)", [("samovar", [("by", "hatstand", (), [("by", "door")])])]),
 ])
 def test_brackets_straight_after_an_anchor_describe_the_anchor(text, expected):
     assert _anchors(text) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the samovar by the hatstand - the one near the door - and the loom",
+     [("samovar", [("by", "hatstand", (), [("near", "door")])]), ("loom", [])]),
+    ("the samovar next to the shelves, the ones a few steps from the loom; the kettle",
+     [("samovar", [("next_to", "shelves", (), [("near", "loom")])]), ("kettle", [])]),
+    # the same words as a new goal: led by an order word, or with a word of its own, or after a goal with no anchor
+    ("the samovar by the hatstand, then the one near the door",
+     [("samovar", [("by", "hatstand", (), [])]), ("samovar", [("near", "door", (), [])])]),
+    ("the red samovar by the hatstand, the blue one near the door",
+     [("samovar", [("by", "hatstand", (), [])]), ("samovar", [("near", "door", (), [])])]),
+    ("the fern - the one by the window -", [("fern", [("by", "window", (), [])])]),
+])
+def test_the_one_with_only_a_relation_after_an_anchor_describes_the_anchor(text, expected):
+    assert _anchors(text) == expected
+
+
+@pytest.mark.parametrize("det", ["the", "whichever", "any"])
+@pytest.mark.parametrize("holds", ["holds", "that has", "which also contains", "housing", "with"])
+def test_a_room_picked_out_by_what_it_holds_is_the_same_room(det, holds):
+    (sg,) = parse_instruction(f"the teal samovar in {det} room {holds} the loom").subgoals
+    assert (sg.target.head, sg.room, [(r.type, r.anchor.head) for r in sg.target.relations]) == (
+        "samovar", None, [("in_room_with", "loom")])
+
+
+@settings(max_examples=40, deadline=None)
+@given(quantified=st.sampled_from(["pick up every one", "so long as each one is checked", "and the last one",
+                                   "just the one", "tick off every one in the book"]),
+       sep=st.sampled_from([". ", ", ", "; "]), n=st.integers(1, 3))
+def test_every_one_and_the_last_one_name_no_goal_of_their_own(quantified, sep, n):
+    """'every one', 'each one', 'the last one': the goals said elsewhere, counted or put in order; an elided
+    phrase with words of its own is still a goal."""
+    nouns = ["samovar", "hatstand", "loom"][:n]
+    text = "visit " + ", then ".join(f"the {w}" for w in nouns) + sep + quantified
+    assert [s.target.head for s in parse_instruction(text).subgoals] == nouns
+    assert [s.target.head for s in parse_instruction(f"the red samovar{sep}the blue one").subgoals] == [
+        "samovar", "samovar"]
 
 
 @pytest.mark.parametrize("text, xy", [("the samovar at 11.8 m on x and 4.4 m on y", (11.8, 4.4)),

@@ -221,6 +221,14 @@ for _v in ("share", "shares", "sharing", "shared"):
         for _p in ("with", "as"):
             RELATION_PHRASES[f"{_v} {_d} room {_p}"] = "in_room_with"
 
+# "in whichever room holds", "in the room that also houses": a room picked out by what it holds is in_room_with.
+for _d in ("the", "whichever", "whatever", "any"):
+    for _r in ("", "that ", "which ", "that also ", "which also ", "also "):
+        for _h in ("has", "holds", "contains", "houses", "keeps"):
+            RELATION_PHRASES.setdefault(f"in {_d} room {_r}{_h}", "in_room_with")
+    for _h in ("with", "containing", "holding", "housing", "that has", "that holds"):
+        RELATION_PHRASES.setdefault(f"in {_d} room {_h}", "in_room_with")
+
 # Words that may stand between a noun and its relation ("the lamp that is right next to the sofa").
 RELATIVE_LEADERS = frozenset(
     "that which who is are sits stands lies located positioned placed situated sitting standing lying "

@@ -313,6 +313,9 @@ _SPLIT = re.compile(
 PAIR = "⟪pair⟫"  # "both boilers": the goal is asked for twice, as two objects
 _TOKEN = re.compile(r"⟪[a-z]+⟫|[^\W_]+(?:['\-][^\W_]+)*")
 SWAP_BACK = ("after", "but first", "before that")  # "X after Y": Y comes first
+# "every one", "each one": a count of goals said elsewhere; "the last one": their order, neither a goal of its own
+_QUANTIFIERS = frozenset({"every", "each", "any", "no"})
+_SEQUENCE_WORDS = frozenset({"first", "next", "last", "final", "only", "just", "same", "very", "single"})
 APPOSITION = ("(", "[")  # "the desk (the oak one)": the bracketed phrase describes the previous goal
 LIST_SEPARATORS = (",", ")", "]", "-")  # "-": a spaced hyphen or a dash  # "the heater, the black one,": an apposition unless it clashes
 
@@ -1472,6 +1475,12 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
             continue
         current.relations.append((rtype, node))
         current = node
+    if words and words[-1] in ("one", "ones") and ((len(words) > 1 and words[-2] in _QUANTIFIERS) or (all(
+            w in _SEQUENCE_WORDS for w in words[:-1]) and not (piece.sensors or piece.locations or piece.room or
+                                                                 top.relations or top.states))):
+        # "pick up every one", "so long as each one is cleared", "and the last one, the speaker": the goals said
+        # elsewhere, counted or put in order, no goal of its own
+        return _Piece(node=None, connector=connector, texts=piece.texts)
     if words and words[-1] in ("one", "ones") and (len(words) > 1 or piece.sensors or piece.locations or
                                                       piece.room or top.relations or top.states):
         # "the coldest one", "the red one near the door": the head of the previous goal, elided.
@@ -1491,6 +1500,12 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
     else:
         piece.node = top
     return piece
+
+
+def _only_related(p: _Piece) -> bool:
+    """Whether an elided phrase ("the one ...") says nothing of its own but relations ("the one by the door")."""
+    return (p.node is not None and all(w in ("one", "ones") for w in p.node.words) and not p.node.states
+            and bool(p.node.relations or p.relations) and not (p.room or p.locations or p.sensors or p.attrs_after))
 
 
 def _all_modifiers(words: list[str]) -> bool:
@@ -1676,8 +1691,10 @@ def parse_instruction(text: str) -> TaskChain:
             p.room, p.node = " ".join(p.node.words), None  # "head into the flour store and find the sack": its room
     goals: list[_Piece] = []
     pending: _Piece | None = None
+    opened = False  # a bracket opened on words that say nothing ("(to be precise, the ..."): the next piece is in it
     for idx, p in enumerate(pieces):
         nxt = pieces[idx + 1] if idx + 1 < len(pieces) else None
+        in_bracket, opened = p.connector in APPOSITION or (opened and p.connector == ","), False
         if p.attrs_only and not (goals and p.connector in APPOSITION) and not (
                 nxt is not None and nxt.connector in (",", "and") and not nxt.det and not nxt.led
                 and (nxt.node is not None or nxt.attrs_only)):
@@ -1702,20 +1719,42 @@ def parse_instruction(text: str) -> TaskChain:
             continue
         if p.node is None:
             if p.empty:
+                opened = in_bracket
                 continue
             if p.attrs_only and goals and p.connector in APPOSITION:  # "the heater (black)"
                 p.attrs_after, p.attrs_only = p.attrs_only, []
+            anchor = _last_anchor(goals[-1]) if goals and p.connector in APPOSITION else None
+            if anchor is not None and p.attrs_after and not (p.room or p.locations or p.sensors or p.relations):
+                # "the stool by the loom (teal)", "near the fan (switched off)": what a bracket says straight after
+                # an anchor is the anchor's, as in "the lamp by the shelf (the oak one)"
+                anchor.add_states(p.attrs_after)
+                goals[-1].texts += p.texts
+                continue
             if p.attrs_only or not goals:
                 pending = p if pending is None else _merge(pending, p)
             else:
                 _merge(goals[-1], p)
             continue
+        anchor = _last_anchor(goals[-1]) if goals and in_bracket and not p.ellipsis and pending is None else None
+        if anchor is not None and split_noun_phrase(p.node.words)[1] == split_noun_phrase(anchor.words)[1]:
+            # "the airer near the bin (to be precise, the bin by the door)": the anchor's noun said again in a
+            # bracket straight after it is more about the anchor
+            anchor.words = [w for w in split_noun_phrase(p.node.words)[0] if w not in anchor.words] + anchor.words
+            anchor.add_states(p.node.states + p.attrs_after)
+            anchor.relations += p.node.relations + p.relations
+            goals[-1].texts += p.texts
+            continue
+        of_anchor = (p.ellipsis and goals and p.connector in LIST_SEPARATORS and not p.led and _only_related(p)
+                     and _last_anchor(goals[-1]) is not None)
         if p.ellipsis and goals and pending is None and (
-            p.connector in APPOSITION or (p.connector in LIST_SEPARATORS and not p.led and not _clashes(goals[-1], p))
+            p.connector in APPOSITION or of_anchor or
+                (p.connector in LIST_SEPARATORS and not p.led and not _clashes(goals[-1], p))
         ):
             # "the heater, the black one," / "the fern (the one by the window)": more about the same goal; in
-            # brackets straight after an anchor ("the lamp by the shelf (the one near the door)"), about the anchor.
-            anchor = _last_anchor(goals[-1]) if p.connector in APPOSITION and p.node is not None else None
+            # brackets straight after an anchor ("the lamp by the shelf (the one near the door)"), about the anchor,
+            # as is "the one" with nothing but a relation after an anchor and a comma or dash ("the bin close to
+            # the butcher block - the one parked next to the stand mixer -")
+            anchor = _last_anchor(goals[-1]) if (p.connector in APPOSITION or of_anchor) and p.node is not None else None
             if anchor is not None:
                 anchor.words = [w for w in p.node.words if w not in ("one", "ones")] + anchor.words
                 anchor.add_states(p.node.states + p.attrs_after)
