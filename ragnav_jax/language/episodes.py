@@ -820,6 +820,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_af": ("phrasings_af", "af"),
                     "unseen_ag": ("phrasings_ag", "ag"),
                     "unseen_ah": ("phrasings_ah", "ah"),
+                    "unseen_ai": ("phrasings_ai", "ai"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
