@@ -821,6 +821,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ag": ("phrasings_ag", "ag"),
                     "unseen_ah": ("phrasings_ah", "ah"),
                     "unseen_ai": ("phrasings_ai", "ai"),
+                    "unseen_aj": ("phrasings_aj", "aj"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
