@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from ragnav_jax.language import lexicon as L
 from ragnav_jax.language.parser import parse_instruction, words_to_number
-from ragnav_jax.language.types import ParseError, validate_chain_dict
+from ragnav_jax.language.types import ParseError, SensorConstraint, validate_chain_dict
 
 HELDOUT = Path(__file__).resolve().parent / "data" / "heldout_phrasings.jsonl"
 
@@ -752,3 +752,91 @@ def test_names_and_states_that_end_like_participles_stay_what_they_are(text, hea
     (sg,) = parse_instruction(text).subgoals
     assert sg.target.head == head and len(sg.target.relations) == 1
     assert (state in sg.target.attributes) if state else True
+
+
+_READINGS = {"temperature": "temperature_c", "temp": "temperature_c", "NDVI": "ndvi", "humidity": "humidity_pct"}
+
+
+@settings(max_examples=60, deadline=None)
+@given(reading=st.sampled_from(sorted(_READINGS)), lead=st.sampled_from(["whose", "with a", "with its"]),
+       verb=st.sampled_from(["", "is ", "comes out ", "reads "]),
+       way=st.sampled_from([("higher", "max"), ("greater", "max"), ("lower", "min"), ("less", "min")]),
+       others=st.sampled_from(["any other", "any other's", "all the others", "all the rest", "every other one",
+                               "everything else", "the rest"]))
+def test_a_reading_above_or_below_every_other_is_a_superlative(reading, lead, verb, way, others):
+    """'whose NDVI is lower than any other', 'with a temp higher than all the rest': the least or the most, read
+    as a superlative (no number is missing), and the next goal keeps its own words."""
+    text = f"Go to the samovar, {lead} {reading} {verb}{way[0]} than {others}, then the hatstand."
+    sgs = parse_instruction(text).subgoals
+    assert [s.target.head for s in sgs] == ["samovar", "hatstand"]
+    assert sgs[0].sensors == (SensorConstraint(_READINGS[reading], way[1]),) and sgs[1].sensors == ()
+
+
+@pytest.mark.parametrize("text, sensor", [
+    ("the samovar whose temperature beats all the others", ("temperature_c", "max")),
+    ("the fern that leads every other on NDVI", ("ndvi", "max")),
+    ("the fern whose NDVI trails all the rest", ("ndvi", "min")),
+    ("the samovar that is warmer than all the others", ("temperature_c", "max")),
+    ("the samovar (lowest temp of the lot)", ("temperature_c", "min")),
+    ("the samovar with the highest temperature of any", ("temperature_c", "max")),
+    ("the samovar whose thermometer reading is the lowest", ("temperature_c", "min")),
+])
+def test_outdoing_verbs_and_superlative_tails(text, sensor):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == text.split()[1] and sg.sensors == (SensorConstraint(*sensor),)
+
+
+def test_a_comparison_with_a_named_group_keeps_its_words():
+    """'lower than any other shelf' says nothing of a sensor: no reading is named and no comparative of one."""
+    (sg,) = parse_instruction("the lamp that is lower than any other shelf").subgoals
+    assert sg.target.head == "lamp" and sg.sensors == ()
+
+
+@pytest.mark.parametrize("text, value", [("the fern whose NDVI is higher than nought point four", ("gt", 0.4)),
+                                         ("the fern (ndvi: 0.4)", ("approx", 0.4)),
+                                         ("the fern (NDVI score: 0.24 give or take)", ("approx", 0.24)),
+                                         ("the samovar (temperature ≈ 22)", ("approx", 22.0)),
+                                         ("the samovar whose temperature is nigh on 35", ("approx", 35.0))])
+def test_more_ways_to_write_a_reading(text, value):
+    (sg,) = parse_instruction(text).subgoals
+    assert [(c.comparator, c.value) for c in sg.sensors] == [value]
+
+
+@pytest.mark.parametrize("text, xy", [("the samovar at map reference x = 9.2, y = 0.1", (9.2, 0.1)),
+                                      ("the samovar at grid ref 3.5, 2.0", (3.5, 2.0)),
+                                      ("the samovar (x/y fix: 6.4, 0.4)", (6.4, 0.4)),
+                                      ("the samovar (coords: 1, 2)", (1.0, 2.0))])
+def test_a_labelled_pair_is_a_coordinate_hint(text, xy):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == "samovar" and (sg.location.x, sg.location.y) == xy and sg.target.relations == ()
+
+
+@pytest.mark.parametrize("phrase", ["within a few paces of", "within a short stroll of", "within easy reach of",
+                                    "handy for", "close at hand to"])
+def test_distances_said_as_effort_are_near(phrase):
+    (sg,) = parse_instruction(f"the samovar {phrase} the hatstand").subgoals
+    assert [(r.type, r.anchor.head) for r in sg.target.relations] == [("near", "hatstand")]
+
+
+@pytest.mark.parametrize("text, bound", [("the samovar whose temperature never sinks beneath 20 degrees", ("ge", 20.0)),
+                                         ("the samovar whose temperature doesn't climb above 40", ("le", 40.0)),
+                                         ("the fern whose NDVI won't dip below 0.5", ("ge", 0.5)),
+                                         ("the fern whose NDVI never goes past 0.5", ("le", 0.5))])
+def test_a_reading_that_never_passes_a_bound_stays_on_its_side(text, bound):
+    (sg,) = parse_instruction(text).subgoals
+    assert [(c.comparator, c.value) for c in sg.sensors] == [bound]
+
+
+@pytest.mark.parametrize("lead", ["through", "along", "right there", "down"])
+def test_an_adverb_before_a_room_leaves_the_room(lead):
+    (sg,) = parse_instruction(f"the samovar {lead} in the scullery").subgoals
+    assert (sg.target.head, sg.room) == ("samovar", "scullery")
+
+
+def test_at_the_last_opens_a_goal_and_axes_may_read_their_numbers():
+    sgs = parse_instruction("go first unto the samovar by the loom; and at the last repair unto the hatstand where "
+                            "x reads 11.6 and y reads 4.8").subgoals
+    assert [s.target.head for s in sgs] == ["samovar", "hatstand"]
+    assert (sgs[1].location.x, sgs[1].location.y) == (11.6, 4.8) and sgs[1].target.relations == ()
+    (sg,) = parse_instruction("the samovar at the spot whose x is 6.6 and whose y is 2.5").subgoals
+    assert (sg.location.x, sg.location.y) == (6.6, 2.5)

@@ -221,6 +221,14 @@ for _v in ("share", "shares", "sharing", "shared"):
         for _p in ("with", "as"):
             RELATION_PHRASES[f"{_v} {_d} room {_p}"] = "in_room_with"
 
+# "within a few paces of", "within easy reach of": a distance said as a measure of effort is near.
+for _m in ("a few steps", "a few paces", "a couple of steps", "a couple of paces", "a step or two", "a pace or two",
+           "a short walk", "a short stroll", "a stone's throw", "easy reach", "arm's reach", "walking distance",
+           "easy walking distance", "spitting distance", "a whisker"):
+    RELATION_PHRASES.setdefault(f"within {_m} of", "near")
+RELATION_PHRASES.update({"close at hand to": "near", "near at hand to": "near", "handy for": "near", "handy to": "near",
+                         "hard by": "by", "close beside": "beside"})
+
 # "in whichever room holds", "in the room that also houses": a room picked out by what it holds is in_room_with.
 for _d in ("the", "whichever", "whatever", "any"):
     for _r in ("", "that ", "which ", "that also ", "which also ", "also "):
@@ -256,9 +264,11 @@ READING_NAMES: dict[str, str] = {
     "health index": "ndvi",
     "temperature": "temperature_c",
     "temp": "temperature_c",
+    "thermometer reading": "temperature_c",
     "surface temperature": "temperature_c",
     "heat": "temperature_c",
     "relative humidity": "humidity_pct",
+    "hygrometer reading": "humidity_pct",
     "humidity": "humidity_pct",
     "moisture": "humidity_pct",
     "rh": "humidity_pct",
@@ -367,6 +377,14 @@ COMPARATIVES: dict[str, tuple[str, int]] = {
     "dimmer": ("light_lux", -1),
     "heavier": ("weight_kg", 1),
 }
+# A value said to be above or below every other one's is the most or the least ("whose NDVI is lower than any
+# other", "a temperature higher than all the rest", "whose reading beats all the others"): bare comparatives and
+# verbs of outdoing, with their sign.
+OUTDO_COMPARATIVES = {"higher": 1, "greater": 1, "bigger": 1, "larger": 1, "more": 1, "lower": -1, "less": -1,
+                      "smaller": -1}
+OUTDO_VERBS = {"beats": 1, "tops": 1, "outdoes": 1, "outstrips": 1, "exceeds": 1, "surpasses": 1, "leads": 1,
+               "trumps": 1, "outranks": 1, "is above": 1, "sits above": 1, "is over": 1, "is below": -1,
+               "sits below": -1, "is under": -1, "trails": -1, "undercuts": -1}
 EXTREME_WORDS = {
     "highest": 1, "maximum": 1, "max": 1, "greatest": 1, "largest": 1, "biggest": 1, "top": 1, "peak": 1,
     "lowest": -1, "minimum": -1, "min": -1, "smallest": -1, "least": -1, "most": 1,
@@ -381,12 +399,13 @@ COMPARATOR_PHRASES: dict[str, str] = {
     "at most": "le", "no more than": "le", "not more than": "le", "up to": "le", "<=": "le", "≤": "le",
     "maximum of": "le",
     "about": "approx", "around": "approx", "roughly": "approx", "approximately": "approx", "approx": "approx",
-    "approx.": "approx", "~": "approx", "circa": "approx", "nearly": "approx", "close to": "approx",
+    "approx.": "approx", "~": "approx", "≈": "approx", "circa": "approx", "nearly": "approx", "close to": "approx",
     "near": "approx", "exactly": "approx", "=": "approx", "equal to": "approx", "of about": "approx",
     "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
     "in the neighbourhood of": "approx", "in the neighborhood of": "approx", "in the vicinity of": "approx",
     "short of": "lt", "shy of": "lt", "topping": "gt", "north of": "gt", "past": "gt", "south of": "lt",
-    "in the ballpark of": "approx", "more or less": "approx", "roughly around": "approx", "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
+    "in the ballpark of": "approx", "nigh on": "approx", "more or less": "approx", "roughly around": "approx",
+    "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
 }
 _NEGATABLE = {
     "gt": ("above", "over", "greater than", "more than", "higher than", "bigger than", "larger than", "exceeding",
@@ -410,6 +429,18 @@ COMPARATOR_PHRASES.update({
     "does not fall below": "ge", "doesn't fall below": "ge", "never falls below": "ge", "not falling below": "ge",
     "does not go below": "ge", "doesn't go below": "ge",
 })
+# "never sinks beneath 20", "doesn't climb above 40": a reading that never passes a bound stays on its side of it.
+_DOWN = (("sinks", "sink"), ("dips", "dip"), ("drops", "drop"), ("falls", "fall"), ("slips", "slip"), ("goes", "go"),
+         ("gets", "get"))
+_UP = (("rises", "rise"), ("climbs", "climb"), ("goes", "go"), ("gets", "get"), ("creeps", "creep"),
+       ("strays", "stray"))
+for _neg, _form in (("never", 0), ("does not", 1), ("doesn't", 1), ("won't", 1), ("will not", 1)):
+    for _v in _DOWN:
+        for _p in ("below", "beneath", "under"):
+            COMPARATOR_PHRASES.setdefault(f"{_neg} {_v[_form]} {_p}", "ge")
+    for _v in _UP:
+        for _p in ("above", "over", "beyond", "past"):
+            COMPARATOR_PHRASES.setdefault(f"{_neg} {_v[_form]} {_p}", "le")
 # "not above 20" -> le 20, "no lower than 55" -> ge 55 (thresholds only: comparatives live in COMPARATIVES).
 for _code, _phrases in _NEGATABLE.items():
     for _p in _phrases:
@@ -426,7 +457,8 @@ COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or 
                       "or healthier": "ge", "or greener": "ge"}
 
 NUMBER_WORDS = {
-    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+    "zero": 0, "nought": 0, "naught": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+    "eight": 8, "nine": 9,
     "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16,
     "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50,
     "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
@@ -444,7 +476,8 @@ LEAD_PHRASES = (
     "please", "kindly", "now", "ok", "okay", "hey", "so", "and", "also", "then", "next", "first of all", "first",
     "fourthly", "fifthly", "sixthly", "seventhly",
     "firstly", "to begin with", "to begin", "to start with", "to start", "second", "secondly", "third", "thirdly",
-    "finally", "lastly", "last of all", "last", "after that", "afterwards", "afterward", "subsequently",
+    "finally", "lastly", "last of all", "at the last", "at last", "at the end", "in the end", "last", "after that",
+    "afterwards", "afterward", "subsequently",
     "from there", "once there", "after this", "plus", "but", "robot",
     "could you", "can you", "would you", "will you", "would you mind", "i'd like you to", "i would like you to",
     "i need you to", "i want you to", "i need to", "i want to", "i'd like to", "you should", "you need to",

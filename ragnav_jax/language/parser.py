@@ -125,15 +125,19 @@ _LOC_LEAD = (
     r"\b(?:at|near|around|by|close\s+to|close\s+by|next\s+to|in\s+the\s+(?:vicinity|neighbou?rhood)\s+of"
     r"|not\s+far\s+from)\s+)?"
     r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
-    r"(?:\b(?:map|grid|floor|floor\s+plan)\s+)?(?:\b(?:coordinates?|coords?|position|point|location|spot)\s+)?(?:\bof\s+)?"
+    r"(?:\b(?:map|grid|floor|floor\s+plan)\s+)?"
+    r"(?:\b(?:coordinates?|coords?|position|point|location|spot|reference|ref)\s+)?(?:\bof\s+)?"
 )
 _METRES = r"(?:\s*(?:m|meters?|metres?)\b)?"  # "(3.5 m, 2 m)"
 _PAIR_PAREN = (
-    rf"[(\[]\s*(?:x\s*[=:]?\s*)?(?P<x1>{NUM}){_METRES}\s*[,;|/]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM}){_METRES}\s*[)\]]"
+    # a label may open the bracket: "(coords: 3.5, 2)", "(x/y fix: 6.4, 0.4)"
+    r"[(\[]\s*(?:(?:[a-z]+(?:/[a-z]+)?\s+){0,2}[a-z]+(?:/[a-z]+)?\s*:\s*)?"
+    rf"(?:x\s*[=:]?\s*)?(?P<x1>{NUM}){_METRES}\s*[,;|/]?\s*(?:y\s*[=:]?\s*)?(?P<y1>{NUM}){_METRES}\s*[)\]]"
 )
-_AXIS = r"(?:[\s-]*(?:coordinate|coord|position|value)s?)?\s*(?:=|:|is|of)?\s*"  # "x=", "x: ", "x coordinate of "
+# "x=", "x: ", "x coordinate of ", "x reads "
+_AXIS = r"(?:[\s-]*(?:coordinate|coord|position|value)s?)?\s*(?:=|:|is|of|reads|equals)?\s*"
 _PAIR_XY = (
-    rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|/|\||and|,\s*and)?\s*(?:(?:the|an?)\s+)?"
+    rf"\bx{_AXIS}(?P<x2>{NUM}){_NUM_END}{_METRES}\s*(?:,|;|/|\||and|,\s*and)?\s*(?:(?:the|an?|whose|its)\s+)?"
     rf"y{_AXIS}(?P<y2>{NUM}){_NUM_END}{_METRES}"
 )
 # each number followed by its axis: "11.8 m on x and 4.4 m on y", "7.9 along and 8.5 up" (across a plan, then up it)
@@ -149,7 +153,7 @@ _LOC2 = re.compile(
     # a bare pair after a word of place: "the bean bag by 2.4, 6.2", "near 3, 4" (no unit: "near 20, 21 °C" is a reading)
     rf"|\b(?:by|near|around|roughly|about|approximately|close\s+to|next\s+to)\s+(?={NUM}{_NUM_END}\s*,\s*{NUM}{_NUM_END}"
     rf"(?!\s*{UNIT})))"
-    r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location)\s+)?"
+    r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location|reference|ref)\s+)?"
     r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
     rf"(?P<x3>{NUM}){_NUM_END}{_METRES}(?:\s*[,/|]\s*|\s+(?={NUM}{_NUM_END}(?!\s*(?:{UNIT}|[-+]?\.?\d))))"
     rf"(?P<y3>{NUM}){_NUM_END}{_METRES}"
@@ -158,7 +162,7 @@ _LOC2 = re.compile(
 _S_LEAD = r"(?:\b(?:with|having|that\s+has|which\s+has|whose|where)\s+(?:(?:an?|the|its|their)\s+)?)?"
 _SENS_A = re.compile(
     _S_LEAD + rf"(?:\b(?:current|measured)\s+)?(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?"
-    r"(?:\s+(?:is|of|reads|reading|at|that\s+is|which\s+is|measuring|measures|showing|shows|registering))?"
+    r"(?:\s*:|\s+(?:is|of|reads|reading|at|that\s+is|which\s+is|measuring|measures|showing|shows|registering))?"
     rf"\s*(?:(?P<cmp>{CMP_ALT})\s*)?(?P<num>{NUM}){_NUM_END}\s*(?P<unit>{UNIT})?" + POST
 )
 _SENS_B = re.compile(
@@ -188,16 +192,34 @@ _SENS_C = re.compile(
     rf"(?:(?P<cmp>{CMP_ALT})\s*(?P<num>{NUM}){_NUM_END}{NOT_LENGTH}\s*(?P<unit>{UNIT})?" + POST
     + rf"|(?P<num2>{NUM}){_NUM_END}\s*(?P<unit2>{UNIT})" + POST.replace("?P<post>", "?P<post2>") + ")"
 )
+# "the lowest temp of the lot", "the warmest of all": a superlative's group said again
+_OF_ALL = r"(?:\s+(?:out\s+)?of\s+(?:the\s+lot|the\s+bunch|any|all(?:\s+of\s+them)?|them\s+all|everything)\b)?"
 _SUPER_READ = re.compile(
     r"(?:\b(?:with|having|that\s+has|which\s+has|showing|of)\s+)?(?:\b(?:the|its)\s+)?"
-    rf"(?P<ext>{EXT_ALT})(?:\s+|-)(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?\b"
+    rf"(?P<ext>{EXT_ALT})(?:\s+|-)(?P<rd>{READ_ALT})(?:\s+(?:sensor\s+)?(?:reading|value|level|score|measurement))?\b"
+    + _OF_ALL
 )
 _SUPER_READ2 = re.compile(
-    rf"\b(?:whose|where\s+the|with\s+(?:the|an?|its))\s+(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score|measurement))?"
-    rf"\s+is\s+(?:the\s+)?(?P<ext>{EXT_ALT})\b"
+    rf"\b(?:whose|where\s+the|with\s+(?:the|an?|its))\s+(?P<rd>{READ_ALT})"
+    rf"(?:\s+(?:sensor\s+)?(?:reading|value|level|score|measurement))?\s+is\s+(?:the\s+)?(?P<ext>{EXT_ALT})\b" + _OF_ALL
+)
+# "whose NDVI is lower than any other", "beats all the others": outdoing every other one is a superlative ("warmer
+# than all the rest" is rewritten as "warmest" by _CANONICAL)
+_ALL_OTHERS = (
+    r"(?:(?:that|those)\s+of\s+)?(?:(?:any|every|each|all)\s+(?:of\s+)?(?:the\s+)?(?:others?|rest|remaining)"
+    r"(?:\s+ones?)?|(?:all\s+)?the\s+(?:others|rest)|all\s+others|(?:every|any)(?:thing|one)\s+else)(?:'s\b|'(?!\w)|\b)"
+)
+_READ_NOUN = rf"(?P<rd>{READ_ALT})(?:\s+(?:sensor\s+)?(?:reading|value|level|score|measurement))?"
+_SUPER_THAN = re.compile(
+    _S_LEAD + r"(?:(?:that|which)\s+(?:is|are)\s+|that's\s+)?"
+    rf"(?:{_READ_NOUN}\s+(?:(?:is|reads|sits|runs|stands|shows|registers|measures|comes\s+(?:in|out|up))\s+)?"
+    rf"(?P<cmp>{_alt(L.OUTDO_COMPARATIVES)})\s+than"
+    rf"|{_READ_NOUN.replace('?P<rd>', '?P<rd2>')}\s+(?P<verb>{_alt(L.OUTDO_VERBS)})"
+    rf"|(?P<verb2>{_alt(L.OUTDO_VERBS)}))\s+{_ALL_OTHERS}"
+    rf"(?(verb2)\s+(?:on|in|for)\s+(?:the\s+)?{_READ_NOUN.replace('?P<rd>', '?P<rd3>')}\b)"
 )
 _SUPER_ADJ = re.compile(
-    rf"(?:\b(?P<sup>{_alt(L.SUPERLATIVES)})|\b(?P<ml>most|least)\s+(?P<adj>{_alt(L.GRADABLE)}))"
+    rf"(?:\b(?P<sup>{_alt(L.SUPERLATIVES)})|\b(?P<ml>most|least)\s+(?P<adj>{_alt(L.GRADABLE)}))" + _OF_ALL
 )
 
 # Leftovers that mean a number was meant but could not be read.
@@ -679,10 +701,11 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      rf"(?P<sup>{_alt(L.SUPERLATIVES)})\b",
      r"the \g<sup> \g<np>"),
     # "colder than any other one in there", "warmer than all the others": a superlative.
-    (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+(?:any|every|all|each)\s+(?:of\s+)?(?:the\s+)?(?:other|others)"
-     r"(?:\s+ones?)?(?:\s+(?:in\s+there|there|here|in\s+here))?",
+    (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+{_ALL_OTHERS}(?:\s+(?:in\s+there|there|here|in\s+here))?",
      lambda m: _SUPER_OF_SIGN[L.COMPARATIVES[re.sub(r"\s+", " ", m.group("cmp"))]]),
-    (r"\b(?:down|over|up|out|back|round)\s+(?=in\s+the\b|inside\s+the\b)", ""),  # "down in the pantry"
+    # "down in the pantry", "through in the laundry room", "right there in the pantry"
+    (r"\b(?:down|over|up|out|back|round|through|along|right\s+there|just\s+there)\s+(?=in\s+the\b|inside\s+the\b)",
+     ""),
     (r"\b(?:once|when|after)\s+(?:you're|you\s+are|you've|you\s+have|you)\s+(?:done|finished|through)(?:\s+(?:with\s+"
      r"(?:that|it|this|that\s+one)|there|here))?\b", " then "),
     # Time adverbs say when a state holds, and it holds now: "which is open at the moment".
@@ -891,6 +914,12 @@ def _cut(s: str, marks: _Marks) -> str:
         sign = L.EXTREME_WORDS[m.group("ext")]
         return marks.add(m.group(0), sensor=SensorConstraint(rd, "max" if sign > 0 else "min"))
 
+    def outdoes(m: re.Match) -> str:
+        rd = L.READING_NAMES[re.sub(r"\s+", " ", m.group("rd") or m.group("rd2") or m.group("rd3"))]
+        sign = L.OUTDO_COMPARATIVES[m.group("cmp")] if m.group("cmp") else L.OUTDO_VERBS[
+            re.sub(r"\s+", " ", m.group("verb") or m.group("verb2"))]
+        return marks.add(m.group(0), sensor=SensorConstraint(rd, "max" if sign > 0 else "min"))
+
     def superlative_adj(m: re.Match) -> str:
         if m.group("sup"):
             rd, sign = L.SUPERLATIVES[m.group("sup")]
@@ -916,6 +945,7 @@ def _cut(s: str, marks: _Marks) -> str:
         return marks.add(m.group(0), sensor=(lo, hi))
 
     s = _SENS_RANGE.sub(between, s)
+    s = _SUPER_THAN.sub(outdoes, s)
     s = _SUPER_READ2.sub(superlative_reading, s)
     s = _SUPER_READ.sub(superlative_reading, s)
     s = _COMPARATIVE.sub(comparative, s)
