@@ -840,3 +840,107 @@ def test_at_the_last_opens_a_goal_and_axes_may_read_their_numbers():
     assert (sgs[1].location.x, sgs[1].location.y) == (11.6, 4.8) and sgs[1].target.relations == ()
     (sg,) = parse_instruction("the samovar at the spot whose x is 6.6 and whose y is 2.5").subgoals
     assert (sg.location.x, sg.location.y) == (6.6, 2.5)
+
+
+@pytest.mark.parametrize("text, sensor", [
+    ("the fern for which the NDVI is just about 0·63", ("ndvi", "approx", 0.63)),
+    ("the samovar the temperature of which never sinks beneath 20 degrees", ("temperature_c", "ge", 20.0)),
+    ("the samovar whose temperature is nigh on minus 23 on the Celsius scale", ("temperature_c", "approx", -23.0)),
+    ("the fern whose vegetation index (NDVI) is in excess of .8", ("ndvi", "gt", 0.8)),
+])
+def test_readings_in_relative_clauses_and_other_typography(text, sensor):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == text.split()[1] and [(c.reading, c.comparator, c.value) for c in sg.sensors] == [sensor]
+
+
+@pytest.mark.parametrize("text, rel", [("the samovar in a room together with the loom", "in_room_with"),
+                                       ("the samovar in one room with the loom", "in_room_with"),
+                                       ("the samovar bearing the loom", "with"),
+                                       ("the samovar, carrying the loom", "with"),
+                                       ("the samovar shoulder to shoulder with the loom", "next_to"),
+                                       ("the samovar, immediately adjoining the loom", "next_to")])
+def test_more_relation_phrases(text, rel):
+    (sg,) = parse_instruction(text).subgoals
+    assert (sg.target.head, sg.room, [(r.type, r.anchor.head) for r in sg.target.relations]) == (
+        "samovar", None, [(rel, "loom")])
+
+
+@settings(max_examples=40, deadline=None)
+@given(a=st.sampled_from(sorted(L.COLOURS)), b=st.sampled_from(sorted(L.MATERIALS)),
+       nxt=st.sampled_from(["thereafter the hatstand", "then the hatstand", "and the hatstand"]))
+def test_describing_words_joined_by_and_describe_one_object(a, b, nxt):
+    """'the typewriter, the retro and teal one, kept in the library': 'and' between describing words before a noun
+    joins them; between states after a copula it still lists them."""
+    sgs = parse_instruction(f"the samovar, the {a} and {b} one, kept in the scullery, {nxt}").subgoals
+    assert [s.target.head for s in sgs] == ["samovar", "hatstand"]
+    assert set(sgs[0].target.attributes) == {a, b} and sgs[0].room == "scullery"
+    (sg,) = parse_instruction("the samovar that is open and full").subgoals
+    assert set(sg.target.attributes) == {"open", "full"}
+
+
+@pytest.mark.parametrize("text", ["the samovar (room: scullery), then the hatstand",
+                                  "the samovar that is lacquered (room: scullery), then the hatstand",
+                                  "the samovar [location - the scullery], then the hatstand"])
+def test_a_labelled_room_field(text):
+    sgs = parse_instruction(text).subgoals
+    assert [(s.target.head, s.room) for s in sgs] == [("samovar", "scullery"), ("hatstand", None)]
+
+
+@pytest.mark.parametrize("text, xy", [("the samovar pegged at x: 4.2, y: 9.4", (4.2, 9.4)),
+                                      ("the samovar, at co-ords (10.4, 8.0)", (10.4, 8.0)),
+                                      ("the samovar, at the spot marked x 11.7 and y 11.4", (11.7, 11.4))])
+def test_more_ways_to_lead_a_coordinate_hint(text, xy):
+    (sg,) = parse_instruction(text).subgoals
+    assert sg.target.head == "samovar" and (sg.location.x, sg.location.y) == xy and sg.target.relations == ()
+
+
+def test_itself_in_a_bracket_after_an_anchor_is_the_anchor():
+    (sg,) = parse_instruction("the samovar near the loom (itself bearing the hatstand)").subgoals
+    assert sg.target.head == "samovar" and [r.anchor.head for r in sg.target.relations] == ["loom"]
+    assert [(r.type, r.anchor.head) for r in sg.target.relations[0].anchor.relations] == [("with", "hatstand")]
+
+
+@pytest.mark.parametrize("remark", ["view each one only once the one before it has gone",
+                                    "each only after the one called before it", "never ahead of the previous one"])
+def test_the_one_before_it_names_no_goal(remark):
+    """'the one before it' is another goal named by its place in the order: no goal takes the last goal's noun
+    from it (the remark's other words are left to the tagger)."""
+    sgs = parse_instruction(f"Go to the samovar, then the hatstand. {remark.capitalize()}.").subgoals
+    assert [s.target.head for s in sgs][:2] == ["samovar", "hatstand"]
+    assert not any("hatstand" in s.target.head or s.target.head.startswith("one") for s in sgs[2:])
+
+
+@pytest.mark.parametrize("text, sensor", [("the most luxuriant fern", ("ndvi", "max", None)),
+                                          ("the most shrivelled fern", ("ndvi", "min", None)),
+                                          ("the samovar showing a temperature that is 40 at the lowest",
+                                           ("temperature_c", "ge", 40.0))])
+def test_more_words_for_plant_health_and_bounds(text, sensor):
+    (sg,) = parse_instruction(text).subgoals
+    assert [(c.reading, c.comparator, c.value) for c in sg.sensors] == [sensor]
+
+
+def test_a_room_part_of_the_house_and_a_look():
+    sgs = parse_instruction("the samovar in the scullery part of the house, then the hatstand, teal to look at, in the "
+                            "den, and the loom within striking distance of the cot").subgoals
+    assert [(s.target.head, s.room, s.target.attributes) for s in sgs] == [
+        ("samovar", "scullery", ()), ("hatstand", "den", ("teal",)), ("loom", None, ())]
+    assert [(r.type, r.anchor.head) for r in sgs[2].target.relations] == [("near", "cot")]
+
+
+@settings(max_examples=40, deadline=None)
+@given(words=st.lists(st.sampled_from(sorted(L.COLOURS | {"lacquered", "retro"})), min_size=1, max_size=2, unique=True))
+def test_bare_describing_words_after_a_comma_describe_the_goal_before(words):
+    """'the bicycle, cream, then the fern': no noun follows the words, so they are the bicycle's; 'the big, red
+    chair' still describes the chair that follows."""
+    sgs = parse_instruction(f"the samovar, {', '.join(words)}, then the hatstand").subgoals
+    assert [s.target.head for s in sgs] == ["samovar", "hatstand"]
+    assert set(sgs[0].target.attributes) == set(words) and sgs[1].target.attributes == ()
+    sgs = parse_instruction("the samovar, then the big, red hatstand").subgoals
+    assert sgs[0].target.attributes == () and set(sgs[1].target.attributes) == {"big", "red"}
+
+
+@pytest.mark.parametrize("text", ["the samovar described as teal, in the scullery", "the samovar (tagged teal) in the "
+                                  "scullery", "the samovar labelled as teal in the scullery"])
+def test_a_label_of_describing_words_is_a_state(text):
+    (sg,) = parse_instruction(text).subgoals
+    assert (sg.target.head, sg.target.attributes, sg.room) == ("samovar", ("teal",), "scullery")

@@ -221,13 +221,22 @@ for _v in ("share", "shares", "sharing", "shared"):
         for _p in ("with", "as"):
             RELATION_PHRASES[f"{_v} {_d} room {_p}"] = "in_room_with"
 
+# "in a room together with", "in one room with": one room shared is in_room_with.
+for _d in ("a", "one", "the one"):
+    for _t in ("", "together "):
+        RELATION_PHRASES.setdefault(f"in {_d} room {_t}with", "in_room_with")
+RELATION_PHRASES.setdefault("together in a room with", "in_room_with")
+
 # "within a few paces of", "within easy reach of": a distance said as a measure of effort is near.
 for _m in ("a few steps", "a few paces", "a couple of steps", "a couple of paces", "a step or two", "a pace or two",
            "a short walk", "a short stroll", "a stone's throw", "easy reach", "arm's reach", "walking distance",
            "easy walking distance", "spitting distance", "a whisker"):
     RELATION_PHRASES.setdefault(f"within {_m} of", "near")
 RELATION_PHRASES.update({"close at hand to": "near", "near at hand to": "near", "handy for": "near", "handy to": "near",
-                         "hard by": "by", "close beside": "beside"})
+                         "hard by": "by", "close beside": "beside", "shoulder to shoulder with": "next_to",
+                         "immediately adjoining": "next_to", "directly adjoining": "next_to", "bearing": "with",
+                         "sporting": "with", "carrying": "with", "within striking distance of": "near",
+                         "in striking distance of": "near"})
 
 # "in whichever room holds", "in the room that also houses": a room picked out by what it holds is in_room_with.
 for _d in ("the", "whichever", "whatever", "any"):
@@ -316,6 +325,9 @@ GRADABLE: dict[str, tuple[str, int]] = {
     "unhealthy": ("ndvi", -1),
     "sick": ("ndvi", -1),
     "wilted": ("ndvi", -1),
+    "thriving": ("ndvi", 1), "flourishing": ("ndvi", 1), "vigorous": ("ndvi", 1), "luxuriant": ("ndvi", 1),
+    "verdant": ("ndvi", 1), "withered": ("ndvi", -1), "shrivelled": ("ndvi", -1), "shriveled": ("ndvi", -1),
+    "wilting": ("ndvi", -1), "sickly": ("ndvi", -1), "droopy": ("ndvi", -1),
     "humid": ("humidity_pct", 1),
     "damp": ("humidity_pct", 1),
     "wet": ("humidity_pct", 1),
@@ -404,8 +416,9 @@ COMPARATOR_PHRASES: dict[str, str] = {
     "of around": "approx", "somewhere around": "approx", "in the region of": "approx",
     "in the neighbourhood of": "approx", "in the neighborhood of": "approx", "in the vicinity of": "approx",
     "short of": "lt", "shy of": "lt", "topping": "gt", "north of": "gt", "past": "gt", "south of": "lt",
-    "in the ballpark of": "approx", "nigh on": "approx", "more or less": "approx", "roughly around": "approx",
-    "hovering around": "approx", "hovers around": "approx", "somewhere near": "approx", "give or take": "approx",
+    "in the ballpark of": "approx", "nigh on": "approx", "just about": "approx", "just around": "approx",
+    "more or less": "approx", "roughly around": "approx", "hovering around": "approx", "hovers around": "approx",
+    "somewhere near": "approx", "give or take": "approx",
 }
 _NEGATABLE = {
     "gt": ("above", "over", "greater than", "more than", "higher than", "bigger than", "larger than", "exceeding",
@@ -451,7 +464,8 @@ COMPARATOR_POSTFIX = {"or more": "ge", "or higher": "ge", "or above": "ge", "or 
                       "or less": "le", "or lower": "le", "or below": "le", "or under": "le", "and up": "ge",
                       "and above": "ge", "and below": "le",
                       "or thereabouts": "approx", "or so": "approx", "give or take": "approx", "and under": "le",
-                      "at the very least": "ge", "at the least": "ge", "at the most": "le", "at the very most": "le",
+                      "at the very least": "ge", "at the least": "ge", "at the lowest": "ge", "at the highest": "le",
+                      "at the most": "le", "at the very most": "le",
                       "or more or less": "approx", "or warmer": "ge", "or hotter": "ge", "or colder": "le",
                       "or cooler": "le", "or drier": "le", "or damper": "ge", "or more humid": "ge",
                       "or healthier": "ge", "or greener": "ge"}

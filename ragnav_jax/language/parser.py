@@ -119,14 +119,16 @@ _NW_AFTER_CMP = re.compile(
 _MINUS = re.compile(rf"\b(?:minus|negative)\s+(?=\d|\.\d|(?:{_NW_ALT})\b)")  # "minus five degrees"
 _NW_BEFORE_UNIT = re.compile(rf"\b(?P<nw>{_NW_SEQ})(?=\s*(?:degrees?\b|degs?\b|°|percent\b|per\s+cent\b|%))")
 
+_COORDS = r"(?:coordinates?|coords?|co-ordinates?|co-ords?)"
 _LOC_LEAD = (
     r"(?:(?:\b(?:which|that)\s+is\s+|\bthat's\s+)?(?:\b(?:located|positioned|situated|placed|found|sitting|standing|set"
-    r"|sat|lying|resting|kept|parked|stationed)\s+)?"
+    r"|sat|lying|resting|kept|parked|stationed|pegged|pinned|plotted|marked|logged|fixed)\s+)?"
     r"\b(?:at|near|around|by|close\s+to|close\s+by|next\s+to|in\s+the\s+(?:vicinity|neighbou?rhood)\s+of"
     r"|not\s+far\s+from)\s+)?"
     r"(?:\b(?:about|around|roughly|approximately|approx\.?|near)\s+)?(?:\bthe\s+)?"
     r"(?:\b(?:map|grid|floor|floor\s+plan)\s+)?"
-    r"(?:\b(?:coordinates?|coords?|position|point|location|spot|reference|ref)\s+)?(?:\bof\s+)?"
+    rf"(?:\b(?:{_COORDS}|position|point|location|spot|reference|ref)\s+"
+    r"(?:(?:marked|labell?ed)\s+)?)?(?:\bof\s+)?"
 )
 _METRES = r"(?:\s*(?:m|meters?|metres?)\b)?"  # "(3.5 m, 2 m)"
 _PAIR_PAREN = (
@@ -148,13 +150,13 @@ _PAIR_NUM_AXIS = (
 )
 _LOC1 = re.compile(_LOC_LEAD + rf"(?:{_PAIR_PAREN}|{_PAIR_XY}|{_PAIR_NUM_AXIS})")
 _LOC2 = re.compile(
-    r"(?:\b(?:located|positioned|situated|placed)\s+)?(?:\b(?:at|coordinates?|coords?|position|point|location)\s+"
+    rf"(?:\b(?:located|positioned|situated|placed)\s+)?(?:\b(?:at|{_COORDS}|position|point|location)\s+"
     rf"|\b(?:around|near|roughly|about|approximately)\s+(?={NUM}\s*/)"
     # a bare pair after a word of place: "the bean bag by 2.4, 6.2", "near 3, 4" (no unit: "near 20, 21 °C" is a reading)
     rf"|\b(?:by|near|around|roughly|about|approximately|close\s+to|next\s+to)\s+(?={NUM}{_NUM_END}\s*,\s*{NUM}{_NUM_END}"
     rf"(?!\s*{UNIT})))"
-    r"(?:(?:the\s+)?(?:map|grid)\s+(?:coordinates?|coords?|position|point|location|reference|ref)\s+)?"
-    r"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:coordinates?|coords?|position|point)\s+)?"
+    rf"(?:(?:the\s+)?(?:map|grid)\s+(?:{_COORDS}|position|point|location|reference|ref)\s+)?"
+    rf"(?:(?:about|around|roughly|approximately)\s+)?(?:(?:the\s+)?(?:{_COORDS}|position|point)\s+)?"
     rf"(?P<x3>{NUM}){_NUM_END}{_METRES}(?:\s*[,/|]\s*|\s+(?={NUM}{_NUM_END}(?!\s*(?:{UNIT}|[-+]?\.?\d))))"
     rf"(?P<y3>{NUM}){_NUM_END}{_METRES}"
 )
@@ -703,6 +705,31 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
     # "colder than any other one in there", "warmer than all the others": a superlative.
     (rf"\b(?P<cmp>{_alt(L.COMPARATIVES)})\s+than\s+{_ALL_OTHERS}(?:\s+(?:in\s+there|there|here|in\s+here))?",
      lambda m: _SUPER_OF_SIGN[L.COMPARATIVES[re.sub(r"\s+", " ", m.group("cmp"))]]),
+    # "the retro and teal one", "the lacquered and charcoal drums": "and" between describing words before a noun
+    (rf"(?P<pre>\b(?:the|an?)\s+(?:(?:{_alt(L.MODIFIER_WORDS)})\s+)*)(?P<a>{_alt(L.MODIFIER_WORDS)})\s+and\s+"
+     rf"(?=(?:{_alt(L.MODIFIER_WORDS)})\b)", r"\g<pre>\g<a> "),
+    # "once the one before it has gone", "the one ahead of it": another goal, named by its place in the order
+    (r"\bthe\s+(?:one|ones)\s+(?:[a-z]+ed\s+)?(?:(?:just|right|immediately)\s+)?"
+     r"(?:before|after|ahead\s+of|preceding|following)\s+(?:it|them|this|that)\b", "it"),
+    (r"\bthe\s+(?:previous|preceding)\s+(?:one|ones)\b", "it"),
+    # "the cello (itself sporting the music stand)": a reflexive opening a bracket or an apposition is "the one"
+    (r"(?<=[(\[,])\s*(?:itself|themselves)\b", " the one"),
+    # "the crib described as charcoal", "the daybed (tagged wool)": a label of describing words is a state
+    (rf"\b(?:(?:described|listed|catalogued|logged|labell?ed|tagged|marked|given)\s+as|tagged|labell?ed)\s+"
+     rf"(?P<a>(?:{_alt(L.MODIFIER_WORDS)})(?:\s+(?:and\s+)?(?:{_alt(L.MODIFIER_WORDS)}))*)\b", r"which is \g<a>"),
+    # "the workshop part of the house": the room; "lacquered to look at": what it looks like
+    (r"\b(?P<r>in\s+the\s+[a-z][a-z -]*?)\s+(?:part|end|side|bit)\s+of\s+the\s+(?:house|home|flat|building)\b",
+     r"\g<r>"),
+    (rf"\b(?P<a>{_alt(L.MODIFIER_WORDS)})\s+to\s+look\s+at\b", r"\g<a>"),
+    # A room given as a labelled field: "(room: music room)", "[location - the pantry]"
+    (r"[(\[]\s*(?:room|location)\s*[:=-]\s*(?:the\s+)?(?P<r>[a-z][a-z' -]*?)\s*[)\]]", r" in the \g<r> "),
+    # A reading's name and its abbreviation in brackets: "vegetation index (NDVI)", "relative humidity (RH)"
+    (rf"\b(?P<rd>{READ_ALT})\s*[(\[](?:{READ_ALT})[)\]]", r"\g<rd>"),
+    # Relative clauses on a reading: "the plant for which the NDVI is 0.6", "the heater the temperature of which".
+    (rf"\b(?:for|in|on)\s+which\s+the\s+(?=(?:{READ_ALT})\b)", "whose "),
+    (rf"\bthe\s+(?P<rd>{READ_ALT})\s+of\s+which\b", r"whose \g<rd>"),
+    # "-23 on the Celsius scale": the scale is the unit
+    (r"(?:\s+degrees)?\s+on\s+the\s+(?P<u>celsius|centigrade|fahrenheit)\s+scale\b", r" degrees \g<u>"),
     # "down in the pantry", "through in the laundry room", "right there in the pantry"
     (r"\b(?:down|over|up|out|back|round|through|along|right\s+there|just\s+there)\s+(?=in\s+the\b|inside\s+the\b)",
      ""),
@@ -1538,6 +1565,17 @@ def _only_related(p: _Piece) -> bool:
             and bool(p.node.relations or p.relations) and not (p.room or p.locations or p.sensors or p.attrs_after))
 
 
+def _noun_follows(pieces: list[_Piece], i: int) -> bool:
+    """Whether bare describing words (pieces[i]) run on through ', ' or 'and' into a noun without a determiner
+    ("the big, red chair"), rather than end ("the shelf unit, lacquered, lilac, then ...")."""
+    for q in pieces[i + 1:]:
+        if q.connector not in (",", "and") or q.det or q.led or not (q.node is not None or q.attrs_only):
+            return False
+        if q.node is not None:
+            return True
+    return False
+
+
 def _all_modifiers(words: list[str]) -> bool:
     return bool(words) and all(L.is_modifier(w, words[k + 1] if k + 1 < len(words) else "red") for k, w in enumerate(words))
 
@@ -1617,6 +1655,7 @@ def _normalise(text) -> str:
     # Degree look-alikes that NFKC would turn into letters: masculine ordinal "º", ring above "˚".
     t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
+    t = re.sub(r"(?<=\d)[·•](?=\d)", ".", t)  # a raised decimal point: "0·63"
     t = _LINE_BREAK.sub(_line_break, _SIGN_OFF.sub("", t))
     t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
     t = re.sub(r"\s+", " ", t).strip()
@@ -1725,9 +1764,13 @@ def parse_instruction(text: str) -> TaskChain:
     for idx, p in enumerate(pieces):
         nxt = pieces[idx + 1] if idx + 1 < len(pieces) else None
         in_bracket, opened = p.connector in APPOSITION or (opened and p.connector == ","), False
-        if p.attrs_only and not (goals and p.connector in APPOSITION) and not (
-                nxt is not None and nxt.connector in (",", "and") and not nxt.det and not nxt.led
-                and (nxt.node is not None or nxt.attrs_only)):
+        continues = (nxt is not None and nxt.connector in (",", "and") and not nxt.det and not nxt.led
+                     and (nxt.node is not None or nxt.attrs_only))
+        if (p.attrs_only and goals and p.connector in LIST_SEPARATORS
+                and not (p.det or p.led or _noun_follows(pieces, idx))):
+            # "the bean bag, turquoise, in the games room": bare describing words after a comma describe the goal
+            p.attrs_after, p.attrs_only = p.attrs_only, []
+        if p.attrs_only and not (goals and p.connector in APPOSITION) and not continues:
             # "the iron, the charcoal one": words that no noun follows are the noun ("the big, red chair" has one)
             if not (p.connector == "and" and not p.det and goals and goals[-1].clause is not None):
                 p.node, p.attrs_only = _Node(p.attrs_only), []
