@@ -822,6 +822,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ah": ("phrasings_ah", "ah"),
                     "unseen_ai": ("phrasings_ai", "ai"),
                     "unseen_aj": ("phrasings_aj", "aj"),
+                    "unseen_ak": ("phrasings_ak", "ak"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
