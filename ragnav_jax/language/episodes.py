@@ -823,6 +823,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ai": ("phrasings_ai", "ai"),
                     "unseen_aj": ("phrasings_aj", "aj"),
                     "unseen_ak": ("phrasings_ak", "ak"),
+                    "unseen_al": ("phrasings_al", "al"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
