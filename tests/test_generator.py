@@ -1,10 +1,20 @@
+import itertools
 from collections import Counter
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ragnav_jax.config import WorldConfig, load_config
-from ragnav_jax.world.generator import build_walls, generate_scene, generate_scenes, place_doors, split_rooms
-from ragnav_jax.world.geometry import reachability
+from ragnav_jax.world.generator import (
+    SPACE_TOLERANCE,
+    build_walls,
+    generate_scene,
+    generate_scenes,
+    place_doors,
+    split_rooms,
+)
+from ragnav_jax.world.geometry import FLAT_HEIGHT, reachability
 from ragnav_jax.world.scene import scene_to_json
 
 CFG = WorldConfig(num_scenes=4)
@@ -117,3 +127,15 @@ def test_paper_preset_scale():
     assert cfg.world.num_scenes == 14
     s = generate_scene(cfg.world, cfg.seed, 0)
     assert len(s.rooms) >= cfg.world.min_rooms and len(s.objects) >= cfg.world.min_objects
+
+
+@settings(max_examples=12, deadline=None)
+@given(seed=st.integers(0, 2**31 - 1), split=st.sampled_from(["seen", "unseen"]))
+def test_no_object_inside_another(seed, split):
+    """Things that stand on a shelf, a desk or a workbench stand side by side: no two boxes (rugs and mats
+    aside) share more than SPACE_TOLERANCE along every axis, so none is hidden inside another."""
+    cfg = WorldConfig(split=split, min_rooms=4, max_rooms=5, min_objects=30, max_objects=40)
+    objs = [o for o in generate_scene(cfg, seed, 0).objects if o.size[2] > FLAT_HEIGHT]
+    for a, b in itertools.combinations(objs, 2):
+        gaps = [abs(p - q) - (s + t) / 2 for p, q, s, t in zip(a.position, b.position, a.size, b.size)]
+        assert max(gaps) >= -SPACE_TOLERANCE, (a.id, b.id)

@@ -92,7 +92,7 @@ def cmd_tune(args, cfg) -> int:
 
 
 def cmd_fit_verifier(args, cfg) -> int:
-    from ragnav_jax.evaluation.fitting import fit_verifier, write_fitted
+    from ragnav_jax.evaluation.fitting import FIT_SCENES, fit_verifier, write_fitted
     from ragnav_jax.memory.encoder import make_embedder
     from ragnav_jax.runs import init_run, refuse_overwrite
 
@@ -101,7 +101,7 @@ def cmd_fit_verifier(args, cfg) -> int:
     init_run(out, cfg, "fit-verifier")
     embedder = make_embedder(cfg.memory.embedder, dim=cfg.memory.hashing_dim, batch_size=cfg.memory.embed_batch,
                              buckets=cfg.memory.token_buckets)
-    entry = fit_verifier(cfg, embedder, scenes=args.scenes, seed=args.seed)
+    entry = fit_verifier(cfg, embedder, scenes=args.scenes or FIT_SCENES, seed=args.seed)
     path = write_fitted(entry, cfg.memory.embedder, out / "fitted.json")
     p, acc = entry["params"], entry["balanced_accuracy"]
     print(", ".join(f"{k}={v}" for k, v in p.items()) + " (balanced accuracy on the seen training houses: "
@@ -159,7 +159,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p = sub.add_parser("fit-verifier", parents=[common],
                        help="fit the reflection's verifier thresholds on seen-split houses (writes OUT/fitted.json)")
     p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--scenes", type=positive_int, default=8, help="seen-split training houses (default 8)")
+    p.add_argument("--scenes", type=positive_int, help="seen-split training houses (default: fitting.FIT_SCENES, 24)")
     p.add_argument("--seed", type=nonneg_int, default=12345, help="seed of the training houses (not the evaluation's)")
     p.add_argument("--force", action="store_true", help="overwrite an earlier OUT/fitted.json")
     p.set_defaults(func=cmd_fit_verifier)

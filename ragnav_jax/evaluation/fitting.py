@@ -1,6 +1,6 @@
 """Fitting the verifier's thresholds on the seen split only (`ragnav fit-verifier`).
 
-    entry = fit_verifier(cfg, embedder, scenes=8, seed=12345)    # {"params": ..., "fitted_on": ..., ...}
+    entry = fit_verifier(cfg, embedder, scenes=24, seed=12345)    # {"params": ..., "fitted_on": ..., ...}
 
 Training data: houses drawn by the seen-split generator (`world.split=seen`, its own seed, never the
 evaluation houses), each object perceived `looks` times by the captioner (standing for the memory's
@@ -32,6 +32,9 @@ GRID_TAU = np.round(np.arange(0.2, 0.96, 0.02), 2)
 GRID_MARGIN = np.round(np.arange(0.0, 0.41, 0.02), 2)
 GATE_RECALL = 0.95
 BARE_RECALL = 0.99  # tau_bare keeps this share of the seen goals' and anchors' heads
+# seen-split training houses: 8 were too few (tau_kind 0.22 or 0.42 as three of them changed when things on a desk
+# stopped overlapping); 24 houses give the same thresholds on two seeds (12345, 777)
+FIT_SCENES = 24
 
 
 def balanced_accuracy(pred: np.ndarray, label: np.ndarray) -> float:
@@ -62,7 +65,7 @@ def _seen_scenes(cfg, scenes: int, seed: int):
     return [generate_scene(cfg.world, seed, i) for i in range(scenes)]
 
 
-def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8):
+def training_rows(cfg, embedder, scenes: int = FIT_SCENES, seed: int = 12345, looks: int = 8):
     """(name rows (n, 5): cosine, gap to the best, exact, label, head is a name the house uses; attribute rows (n, 2): best cosine to a
     descriptor, label; room rows (n, 2): gap to the best room, label) from seen-split houses."""
     from ragnav_jax.world.vocabulary import catalog_for
@@ -116,7 +119,7 @@ def training_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int 
             np.array(room_rows, np.float64).reshape(-1, 2), np.array(gate_rows, np.float64).reshape(-1))
 
 
-def ground_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> np.ndarray:
+def ground_rows(cfg, embedder, scenes: int = FIT_SCENES, seed: int = 12345, looks: int = 8) -> np.ndarray:
     """(n, 2) rows (fit to the house's recorded names, label) for every run of content words that grounding
     may take as a head (`grounding.candidate_heads`) in the seen templates' instructions on seen-split
     houses: label 1 for a goal's or an anchor's head as the generator wrote it, 0 for a piece sharing no word
@@ -145,7 +148,7 @@ def ground_rows(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 
     return np.array(rows, np.float64).reshape(-1, 2)
 
 
-def fit_verifier(cfg, embedder, scenes: int = 8, seed: int = 12345, looks: int = 8) -> dict:
+def fit_verifier(cfg, embedder, scenes: int = FIT_SCENES, seed: int = 12345, looks: int = 8) -> dict:
     """Fits tau_head / head_margin, tau_kind, room_margin / room_gate, tau_ground and tau_bare on seen-split houses;
     returns the fitted.json entry."""
     H, Kd, R, G = training_rows(cfg, embedder, scenes, seed, looks)

@@ -41,6 +41,7 @@ WALL_HEIGHT = 2.5
 ROBOT_RADIUS = 0.2  # reachability is checked for a robot of this radius
 SUCCESS_RADIUS = 1.0  # every object must have reachable floor within this distance of its box
 GRID_RES = 0.1
+SPACE_TOLERANCE = 0.01  # metres: boxes may touch or overlap this little on an axis (positions are rounded to 0.01)
 
 Rect = tuple[float, float, float, float]  # (x0, y0, x1, y1)
 
@@ -255,6 +256,17 @@ class _Furnisher:
             return False
         return True
 
+    def _space_free(self, x, y, z, w, d, h, support: SceneObject) -> bool:
+        """A box standing on `support` meets no other object but flat ones (two things on one shelf stand side
+        by side: neither is hidden inside the other)."""
+        for o in self.objects:
+            if o is support or o.size[2] <= geometry.FLAT_HEIGHT:
+                continue
+            gaps = [abs(p - q) - (a + b) / 2 for p, q, a, b in zip(o.position, (x, y, z), o.size, (w, d, h))]
+            if max(gaps) < -SPACE_TOLERANCE:
+                return False
+        return True
+
     def _still_reachable(self, free: np.ndarray, extra: SceneObject | None) -> bool:
         labels, _ = ndimage.label(free)
         i, j = self.grid.cell_of(*self.scene.start.position)
@@ -351,6 +363,8 @@ class _Furnisher:
             x, y, z, w, d, h = (round(v, 2) for v in pose)
             on_top = relation == "on"
             if not on_top and not self._footprint_clear(x, y, w, d, entry.flat, room):
+                continue
+            if on_top and not self._space_free(x, y, z, w, d, h, anchor):
                 continue
             attrs = self._attributes(category, entry)
             sensors = self._sensors(category, entry)
