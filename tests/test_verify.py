@@ -245,8 +245,8 @@ def test_a_rarely_said_name_means_what_it_was_said_of(minilm):
 def test_a_sensor_goal_under_a_word_the_house_never_uses_is_named_among_what_fits(minilm, apartment):
     """The coffee machine is a 'zorbulator' to this house. 'The gadget at about 62 degrees' names nothing
     the encoder relates to it, but the reading singles it out: among the kitchen's objects at that
-    temperature it fits 'gadget' best. Without the sensor, or with a word the house uses, nothing is
-    relaxed."""
+    temperature it fits 'gadget' best. 'The hottest gadget in the kitchen' is the hottest of them all.
+    Without the sensor, or with a word the house uses, nothing is relaxed."""
     v, _ = minilm
     objs = apartment.objects
     k = [o.id for o in objs].index("coffee_1")
@@ -259,6 +259,10 @@ def test_a_sensor_goal_under_a_word_the_house_never_uses_is_named_among_what_fit
     assert check("Go to the gadget in the kitchen.") == []
     assert check("Go to the gadget in the kitchen whose temperature is about 62 degrees.") == [k]
     assert check("Go to the fridge whose temperature is about 62 degrees.") == []  # the house's own word
+    # a superlative ranks every kitchen object with a reading: the best-named alone (the stove, 0.29 to 'gadget'
+    # against the zorbulator's less) would be the hottest of one
+    assert check("Go to the hottest gadget in the kitchen.") == [k]
+    assert check("Go to the coldest gadget in the kitchen.") == [[o.id for o in objs].index("fridge_1")]
 
 
 def test_unknown_room_names_by_their_distinctive_names(minilm):

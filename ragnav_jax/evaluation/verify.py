@@ -28,8 +28,9 @@ against that:
   instances that pass the same checks), relations by position against recorded anchors that pass the
   name and attribute checks (an anchor the memory never recorded leaves a relation unchecked);
 - a goal measured by a sensor, under a head noun the house never uses, that no recorded object passes:
-  the name is checked among the objects that pass everything else, where the best-named pass. The
-  reading singles the object out where the encoder does not know that a soldering station is a tool.
+  the name is checked among the objects that pass everything else, where the best-named pass, and a
+  superlative ranks them all. The reading singles the object out where the encoder does not know that a
+  soldering station is a tool.
 
 RAGNav's pre-check (`contradicts`) reads the memory's own, distant descriptions instead, where
 attributes are often left unsaid: there an attribute rules an instance out only when another value of
@@ -292,8 +293,10 @@ class Verifier:
         A goal measured by a sensor whose head noun the house never uses ("the tool in the workshop at about
         167 degrees", where the encoder does not know a soldering station is a tool) and that no recorded
         object passes is checked by name among the objects that pass everything else: those whose names fit
-        the head best pass (`best_named`). names: each object's names (`SceneView.names_of`), where the caller
-        has them already."""
+        the head best pass (`best_named`). A superlative ("the hottest tool in the workshop") ranges over all
+        of them instead: the head may name any, and picking the best-named one first would rank that one
+        alone (a table saw, closer to "tool" than the soldering station, would be the hottest). names: each
+        object's names (`SceneView.names_of`), where the caller has them already."""
         objs = view.scene.objects
         names = names if names is not None else [view.names_of(i, ps[i]) for i in range(len(objs))]
         named = self.target_fits(sg.target, ps, view.vocab, names, view.classes)
@@ -301,7 +304,9 @@ class Verifier:
         pool = list(view.known)
         if sg.sensors and sg.target.head not in view.vocab and not ok[pool].any():
             rest = self._constrained(view, sg, ps, attributes_seen(sg.target, ps), rank=False)
-            ok = self._constrained(view, sg, ps, rest & self.best_named(sg.target.head, names, rest, pool))
+            if not any(c.is_superlative for c in sg.sensors):
+                rest &= self.best_named(sg.target.head, names, rest, pool)
+            ok = self._constrained(view, sg, ps, rest)
         return ok
 
     def misfits(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
