@@ -824,6 +824,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_aj": ("phrasings_aj", "aj"),
                     "unseen_ak": ("phrasings_ak", "ak"),
                     "unseen_al": ("phrasings_al", "al"),
+                    "unseen_am": ("phrasings_am", "am"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
