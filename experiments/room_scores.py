@@ -4,11 +4,11 @@
 
 For every house, room type t and category held in two or more rooms one of which is a t room: is the t room the
 best-scoring of the rooms holding that category (the verifier's choice, `Verifier.rooms_match`), and over all rooms
-(house top-1)? Each object is perceived `--looks` times by the captioner, standing for the memory's names (as
-`fitting.training_rows`). Two protocols on seen houses: `loo` leaves only t out of the types the score knows (as
-`ragnav fit-verifier` does), `house` leaves out every type of the house, as in an unseen house, where no room's
-type is known. `--check-unseen` adds unseen-split houses of those seeds (a check only: nothing is chosen on them).
-Writes room_scores.json and room_scores.md under --out.
+(house top-1)? A tie of k rooms counts 1/k. Each object is perceived `--looks` times by the captioner, standing for
+the memory's names (as `fitting.training_rows`). Two protocols on seen houses: `loo` leaves only t out of the types
+the score knows (as `ragnav fit-verifier` does), `house` leaves out every type of the house, as in an unseen house,
+where no room's type is known. `--check-unseen` adds unseen-split houses of those seeds (a check only: nothing is
+chosen on them). Writes room_scores.json and room_scores.md under --out.
 """
 
 from __future__ import annotations
@@ -32,10 +32,6 @@ def scores(v: Verifier) -> dict:
 
     def vecs(names):
         return {r: v.vectors(list(ns)) for r, ns in names.items() if ns}
-
-    def distinct(t, names, known):  # the verifier's: mean of the 3 best names' cosine less their mean to known types
-        return {r: float(np.sort(v.cos([t], list(ns))[0] - v.cos(known, list(ns)).mean(0))[::-1][:3].mean())
-                for r, ns in names.items() if ns}
 
     def plain(t, names, known):
         return {r: float(np.sort(v.cos([t], list(ns))[0])[::-1][:3].mean()) for r, ns in names.items() if ns}
@@ -61,8 +57,15 @@ def scores(v: Verifier) -> dict:
                 out[r] = float(s[0] - s.max() - np.log(np.exp(s - s.max()).sum()))
         return out
 
-    return {"distinctiveness (verifier)": distinct, "plain cosine": plain, "name centroid": centroid,
+    return {"distinctiveness (verifier)": v.room_scores, "plain cosine": plain, "name centroid": centroid,
             "whole-room sentence": sentence, "soft type assignment": soft_type}
+
+
+def _share(sc: dict, among, rooms: dict, t: str) -> float:
+    """The share of the best-scoring rooms of `among` that are t rooms (a tie of k rooms counts 1/k each)."""
+    top = max(sc[r] for r in among)
+    best = [r for r in among if sc[r] == top]
+    return sum(rooms[r].type == t for r in best) / len(best)
 
 
 def evaluate(v: Verifier, houses: list, protocol: str, looks: int, tag: str) -> dict:
@@ -79,12 +82,12 @@ def evaluate(v: Verifier, houses: list, protocol: str, looks: int, tag: str) -> 
             known = sorted(set(protos) - ({t} if protocol == "loo" else set(types)))
             for name, f in fns.items():
                 sc = f(t, view.room_names, known)
-                hits[name][2] += rooms[max(sc, key=sc.get)].type == t
+                hits[name][2] += _share(sc, sc, rooms, t)
                 hits[name][3] += 1
                 for c in sorted({o.category for o in scene.objects}):
                     among = {o.room for o in scene.objects if o.category == c and o.room in sc}
                     if len(among) >= 2 and any(rooms[r].type == t for r in among):
-                        hits[name][0] += rooms[max(among, key=sc.get)].type == t
+                        hits[name][0] += _share(sc, among, rooms, t)
                         hits[name][1] += 1
     return {k: {"among_category": round(a / max(n, 1), 3), "rows": n, "house_top1": round(b / max(m, 1), 3),
                 "room_types": m} for k, (a, n, b, m) in hits.items()}

@@ -233,13 +233,15 @@ class Verifier:
         ok = self.names_match(t.head, [{p.name for p in ls} | set(a) for ls, a in zip(looks, aliases)], vocab, classes)
         return ok & attributes_seen(t, looks)
 
-    def room_scores(self, room: str, names: dict[str, Sequence[str]]) -> dict[str, float]:
+    def room_scores(self, room: str, names: dict[str, Sequence[str]],
+                    known: Sequence[str] | None = None) -> dict[str, float]:
         """Room id -> how well the room phrase fits the names the memory recorded there: the mean of its three
         best names' distinctiveness, a name's cosine to the phrase less its mean cosine to the other room
         types the summariser knows (seen: a shelf unit is close to every room and tells none apart). Chosen on
         seen-split houses against the plain cosine and whole-description embeddings (the true room of a
-        type among the rooms holding one category: 0.88 against 0.78 and 0.65)."""
-        known = sorted(set(_summariser().rooms) - {room})
+        type among the rooms holding one category: 0.88 against 0.78 and 0.65). known: the room types to set
+        the phrase against (default: those the summariser knows, less the phrase)."""
+        known = list(known) if known is not None else sorted(set(_summariser().rooms) - {room})
         out = {}
         for r, ns in names.items():
             if ns:
