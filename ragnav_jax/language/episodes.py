@@ -825,6 +825,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ak": ("phrasings_ak", "ak"),
                     "unseen_al": ("phrasings_al", "al"),
                     "unseen_am": ("phrasings_am", "am"),
+                    "unseen_an": ("phrasings_an", "an"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
