@@ -29,8 +29,9 @@ against that:
   name and attribute checks (an anchor the memory never recorded leaves a relation unchecked);
 - a goal measured by a sensor, under a head noun the house never uses, that no recorded object passes:
   the name is checked among the objects that pass everything else, where the best-named pass, and a
-  superlative ranks them all. The reading singles the object out where the encoder does not know that a
-  soldering station is a tool.
+  superlative ranks them all; where some object passes, a superlative ranks every object whose name fits
+  within `head_margin` of the best-named of those, with no absolute bar. The reading singles the object out
+  where the encoder does not know that a soldering station is a tool or a chest freezer an appliance.
 
 RAGNav's pre-check (`contradicts`) reads the memory's own, distant descriptions instead, where
 attributes are often left unsaid: there an attribute rules an instance out only when another value of
@@ -295,20 +296,30 @@ class Verifier:
         A goal measured by a sensor whose head noun the house never uses ("the tool in the workshop at about
         167 degrees", where the encoder does not know a soldering station is a tool) and that no recorded
         object passes is checked by name among the objects that pass everything else: those whose names fit
-        the head best pass (`best_named`). A superlative ("the hottest tool in the workshop") ranges over all
-        of them instead: the head may name any, and picking the best-named one first would rank that one
-        alone (a table saw, closer to "tool" than the soldering station, would be the hottest). names: each
-        object's names (`SceneView.names_of`), where the caller has them already."""
+        the head best pass (`best_named`); a superlative ranks all of them. A superlative under such a head
+        that some object does pass ("the chilliest appliance in the pantry") ranks every object whose name fits
+        the head within `head_margin` of the best-named of those, with no absolute bar: the head is often a
+        word for a kind, and MiniLM puts "appliance" at 0.49 to "mini-fridge" but 0.31 to "chest freezer", so
+        the bar would leave the freezer out and crown the coldest of what is left. names: each object's names
+        (`SceneView.names_of`), where the caller has them already."""
         objs = view.scene.objects
         names = names if names is not None else [view.names_of(i, ps[i]) for i in range(len(objs))]
         named = self.target_fits(sg.target, ps, view.vocab, names, view.classes)
         ok = self._constrained(view, sg, ps, named)
         pool = list(view.known)
-        if sg.sensors and sg.target.head not in view.vocab and not ok[pool].any():
-            rest = self._constrained(view, sg, ps, attributes_seen(sg.target, ps), rank=False)
-            if not any(c.is_superlative for c in sg.sensors):
-                rest &= self.best_named(sg.target.head, names, rest, pool)
-            ok = self._constrained(view, sg, ps, rest)
+        if sg.sensors and sg.target.head not in view.vocab:
+            seen = attributes_seen(sg.target, ps)
+            superlative = any(c.is_superlative for c in sg.sensors)
+            if superlative and ok[pool].any():
+                fit = self._constrained(view, sg, ps, named, rank=False)
+                seen_as = [ns | {p.name for p in looks} for ns, looks in zip(names, ps)]
+                near = self.best_named(sg.target.head, seen_as, fit, np.flatnonzero(fit), self.p.head_margin)
+                ok = self._constrained(view, sg, ps, seen & near)
+            elif not ok[pool].any():
+                rest = self._constrained(view, sg, ps, seen, rank=False)
+                if not superlative:
+                    rest &= self.best_named(sg.target.head, names, rest, pool)
+                ok = self._constrained(view, sg, ps, rest)
         return ok
 
     def misfits(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
@@ -329,14 +340,15 @@ class Verifier:
         named = np.logical_or.reduce([self.verdicts(view, bare, ps, names)] + ok[: len(sensor)])
         return np.where(named, sum((~k).astype(np.float32) for k in ok) if ok else 0.0, np.inf).astype(np.float32)
 
-    def best_named(self, head: str, names: Sequence[set[str]], among: np.ndarray, pool: Sequence[int]) -> np.ndarray:
-        """(O,) bool: objects whose best name fits the head at least as well as that of every recorded object
-        of `among` ((O,) bool)."""
+    def best_named(self, head: str, names: Sequence[set[str]], among: np.ndarray, pool: Sequence[int],
+                   margin: float = 0.0) -> np.ndarray:
+        """(O,) bool: objects whose best name fits the head at least as well, less margin, as that of every
+        object of pool that is among ((O,) bool)."""
         flat = sorted({n for ns in names for n in ns})
         c = dict(zip(flat, self.cos([head], flat)[0])) if flat else {}
         score = np.array([max((c[n] for n in ns), default=-1.0) for ns in names])
         rivals = [i for i in pool if among[i]]
-        return score >= (score[rivals].max() if rivals else -1.0) - 1e-6
+        return score >= (score[rivals].max() if rivals else -1.0) - margin - 1e-6
 
     def _constrained(self, view: SceneView, sg: Subgoal, ps: Sequence[Sequence[Perceived]], ok: np.ndarray,
                      rank: bool = True) -> np.ndarray:
