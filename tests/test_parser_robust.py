@@ -944,3 +944,16 @@ def test_bare_describing_words_after_a_comma_describe_the_goal_before(words):
 def test_a_label_of_describing_words_is_a_state(text):
     (sg,) = parse_instruction(text).subgoals
     assert (sg.target.head, sg.target.attributes, sg.room) == ("samovar", ("teal",), "scullery")
+
+
+def test_a_telegram_stop_ends_a_clause():
+    """'STOP' in capitals is a telegram's full stop: the room and the anchor end there. A 'stop' in lower case is a
+    word like any other ('first stop: the samovar')."""
+    chain = parse_instruction("Kindly call at the samovar in the scullery STOP thence to the loom near the cot STOP "
+                              "thence to the hatstand STOP in sequence STOP")
+    sgs = chain.subgoals
+    assert chain.order == "strict" and [(s.target.head, s.room) for s in sgs] == [
+        ("samovar", "scullery"), ("loom", None), ("hatstand", None)]
+    assert [(r.type, r.anchor.head) for r in sgs[1].target.relations] == [("near", "cot")]
+    assert [s.target.head for s in parse_instruction("first stop: the samovar, then the loom").subgoals] == [
+        "samovar", "loom"]

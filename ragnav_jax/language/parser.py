@@ -1636,6 +1636,10 @@ _SIGN_OFF = re.compile(r"(?:(?:\r?\n|\r)|(?<=[.!?])[ \t]+)\s*(?:(?:kind|best|war
                        re.IGNORECASE)
 
 
+# A telegram's full stop: "STOP" in capitals, a word of its own ("ARRIVE KITCHEN STOP THENCE FRIDGE STOP").
+_TELEGRAM_STOP = re.compile(r"(?<![\w-])STOP(?![\w-])")
+
+
 def input_problem(text) -> str | None:
     """Why `text` is no instruction at all, whatever reads it (not text, blank, longer than MAX_CHARS), or None.
     The instruction tagger reads what the parser cannot, but not this."""
@@ -1656,6 +1660,7 @@ def _normalise(text) -> str:
     t = unicodedata.normalize("NFKC", text.translate({0xBA: "°", 0x2DA: "°"}))
     t = t.translate({0x2212: "-", 0x2013: "-", 0x2014: " - ", 0x2018: "'", 0x2019: "'", 0x27EA: " ", 0x27EB: " "})
     t = re.sub(r"(?<=\d)[·•](?=\d)", ".", t)  # a raised decimal point: "0·63"
+    t = _TELEGRAM_STOP.sub(" ; ", t)
     t = _LINE_BREAK.sub(_line_break, _SIGN_OFF.sub("", t))
     t = "".join(ch if ch.isprintable() else " " for ch in t).lower()
     t = re.sub(r"\s+", " ", t).strip()
