@@ -826,6 +826,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_al": ("phrasings_al", "al"),
                     "unseen_am": ("phrasings_am", "am"),
                     "unseen_an": ("phrasings_an", "an"),
+                    "unseen_ao": ("phrasings_ao", "ao"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
