@@ -269,7 +269,8 @@ def test_a_superlative_under_a_kind_word_ranks_every_member_the_encoder_cannot_r
     """This kitchen's fridge is a chest freezer and its stove a range cooker. MiniLM puts 'appliance' at 0.31
     to 'chest freezer', under tau_head, though 0.52 to 'coffee machine': a kind word is not a name. 'The
     coldest appliance in the kitchen' ranks every kitchen object with a temperature whose name fits within
-    head_margin of the best, so the freezer; a word that names one of them ('cooker') still picks by name."""
+    head_margin of the best-named of those passing the name check, so the freezer; a word that names one of
+    them ('cooker') still picks by name."""
     v, _ = minilm
     objs = apartment.objects
     ids = [o.id for o in objs]
