@@ -827,6 +827,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_am": ("phrasings_am", "am"),
                     "unseen_an": ("phrasings_an", "an"),
                     "unseen_ao": ("phrasings_ao", "ao"),
+                    "unseen_ap": ("phrasings_ap", "ap"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
