@@ -957,3 +957,30 @@ def test_a_telegram_stop_ends_a_clause():
     assert [(r.type, r.anchor.head) for r in sgs[1].target.relations] == [("near", "cot")]
     assert [s.target.head for s in parse_instruction("first stop: the samovar, then the loom").subgoals] == [
         "samovar", "loom"]
+
+
+def test_a_modal_or_a_subject_makes_the_unknown_word_after_it_a_verb():
+    """'must muster at the loom': a modal (or 'we', 'you') names who acts, so the unknown word between it and the
+    preposition is a verb, and the list after it splits as it does after any verb."""
+    chain = parse_instruction("Must muster at the samovar near the cot, the loom in the scullery, and the hatstand.")
+    assert [(s.target.head, s.room) for s in chain.subgoals] == [
+        ("samovar", None), ("loom", "scullery"), ("hatstand", None)]
+    assert [(r.type, r.anchor.head) for r in chain.subgoals[0].target.relations] == [("near", "cot")]
+    assert [s.target.head for s in parse_instruction("Then off you trot to the samovar.").subgoals] == ["samovar"]
+
+
+def test_order_words_after_a_clause_lead_the_next_goal():
+    """'...the kiln that is lit; and last of all, the loom': 'last of all' says where the loom comes, so it is no
+    part of the kiln's clause, and the kiln's text (which the learned readers read) ends at 'lit'."""
+    sgs = parse_instruction("First the kiln that is lit; and last of all, the loom by the cot.").subgoals
+    assert [(s.target.head, s.target.attributes) for s in sgs] == [("kiln", ("lit",)), ("loom", ())]
+    assert sgs[0].text == "first the kiln that is lit"
+    assert parse_instruction("the bin that is lilac and closed").subgoals[0].target.attributes == ("lilac", "closed")
+
+
+def test_a_reading_after_an_unknown_verb_stays_with_its_goal():
+    """'the kiln boasting the top air temperature reading': a noun phrase of a reading names no goal of its own,
+    so the goal's span (which the sensor reader reads) keeps it."""
+    sgs = parse_instruction("Go to the kiln boasting the top air temperature reading, then the loom.").subgoals
+    assert len(sgs) == 2 and sgs[1].target.head == "loom"
+    assert sgs[0].text.endswith("the top air temperature reading") and sgs[0].target.head.startswith("kiln")

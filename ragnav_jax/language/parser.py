@@ -1210,8 +1210,11 @@ def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
                 tokens = tokens[k:]
             elif (_plain_word(before[0]) and before[-1] in _INTRO_PREPS
                   and (all(w in L.VERB_PARTICLES for w in before[1:-1])
-                       or (len(before) == 4 and before[1] in ("a", "an") and _plain_word(before[2])))):
-                # "scurry over to [the kiln]", "take a look at [the kiln]"
+                       or (len(before) == 4 and before[1] in ("a", "an") and _plain_word(before[2]))
+                       or (any(w in L.MODALS or w in L.SUBJECT_PRONOUNS for w in before[:-1])
+                           and all(_plain_word(w) or w in L.VERB_PARTICLES for w in before[1:-1])))):
+                # "scurry over to [the kiln]", "take a look at [the kiln]"; a modal or a subject names a doer,
+                # so what follows it is a verb: "must call at [the kiln]", "down we go to [the loom]"
                 tokens = tokens[k:]
             break
     led = len(tokens) < n0
@@ -1716,6 +1719,8 @@ def _unglue(seg: str, marks: _Marks) -> list[str]:
                 if (rest and rest[-1] in L.CLOSED_CLASS and rest[-1] not in ("one", "ones")) or (
                         cop is not None and not _RELATIVES & set(rest[:cop])):
                     continue
+                if _READING_WORDS & set(next((rest[:i] for i, x in enumerate(rest) if x in L.CLOSED_CLASS), rest)):
+                    continue  # "the dryer boasting the top air temperature reading": a reading is no goal of its own
                 head = seg[: toks[p].start()]
                 head = _GLUE_TAIL.sub(" ", head)
                 if head.strip():
@@ -1784,8 +1789,10 @@ def parse_instruction(text: str) -> TaskChain:
             # "the chest that is ivory and open in the den": adjectives with no noun go on with the clause
             p.attrs_only, p.attrs_after, p.relations = p.node.words, p.node.states, p.node.relations
             p.node = None
-        if p.node is None and p.connector == "and" and goals and goals[-1].clause is not None and not p.det:
+        if (p.node is None and p.connector == "and" and goals and goals[-1].clause is not None and not p.det
+                and not (p.empty and p.led)):
             # "the bin that is lilac and closed", "the desk that is oak and has a lamp on it": the clause goes on
+            # ("...that is closed; and last of all, the minibar": order words alone lead the next goal)
             node = goals[-1].clause
             node.add_states(p.attrs_only + p.attrs_after)
             if node is goals[-1].node:
