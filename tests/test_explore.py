@@ -13,7 +13,7 @@ from ragnav_jax.sim.explore import explore_scenes, explorer_for
 from ragnav_jax.sim.sensors import lidar_angles
 from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.generator import generate_scenes
-from ragnav_jax.world.scene import example_scene_path, save_scene
+from ragnav_jax.world.scene import save_scene
 
 CFG = load_config(None, ["explore.max_steps=2500"])
 
@@ -82,26 +82,29 @@ def test_scan_cover_fills_the_scan_polygon():
     np.testing.assert_array_equal(got, [True, True, True, False, True])
 
 
-def test_cli_explore_and_show_trajectory(tmp_path, apartment):
-    """Same settings as above, so the CLI reuses the compiled apartment explorer of this process."""
+def test_cli_explore_and_show_trajectory(tmp_path, scenes):
+    """The scene the batch test above explores alone, with the same settings, so the CLI reuses that compiled
+    explorer of this process."""
+    scene = min(scenes, key=lambda s: len(s.objects))
+    name = scene.name
     run = tmp_path / "run"
     scenes_dir = tmp_path / "scenes"
-    save_scene(apartment, scenes_dir / "apartment.json")
+    save_scene(scene, scenes_dir / f"{name}.json")
     argv = ["explore", "--scenes", str(scenes_dir), "--out", str(run), "--quiet", "explore.max_steps=2500"]
     assert main(argv) == 0
     summary = json.loads((run / "explore" / "summary.json").read_text())
     assert summary["num_scenes"] == 1 and summary["coverage"] >= 0.95 and summary["all_finished"]
-    stream = ExplorationStream.load(run / "explore" / "streams" / "apartment.npz")
-    assert stream.scene == "apartment" and len(stream.t) == summary["scenes"][0]["records"]
-    assert stream.object_ids == tuple(o.id for o in apartment.objects)
-    assert (run / "scenes" / "apartment.json").exists() and (run / "explore" / "plots" / "apartment.png").exists()
+    stream = ExplorationStream.load(run / "explore" / "streams" / f"{name}.npz")
+    assert stream.scene == name and len(stream.t) == summary["scenes"][0]["records"]
+    assert stream.object_ids == tuple(o.id for o in scene.objects)
+    assert (run / "scenes" / f"{name}.json").exists() and (run / "explore" / "plots" / f"{name}.png").exists()
     png = tmp_path / "traj.png"
-    assert main(["show-trajectory", str(run), "--scene", "apartment", "--out", str(png)]) == 0
+    assert main(["show-trajectory", str(run), "--scene", name, "--out", str(png)]) == 0
     assert png.read_bytes()[:4] == b"\x89PNG"
     assert main(["show-trajectory", str(run), "--scene", "nope", "--out", str(png)]) == 2
     assert main(argv) == 2  # an exploration is already there (no --force)
     # A differing scene file of the same name in RUN/scenes is a user error, not an overwrite.
     other = tmp_path / "other"
     (other).mkdir()
-    (other / "apartment.json").write_text(example_scene_path().read_text().replace('"apartment"', '"apartment2"'))
+    (other / f"{name}.json").write_text((scenes_dir / f"{name}.json").read_text().replace(f'"{name}"', f'"{name}2"'))
     assert main(["explore", "--scenes", str(other), "--out", str(run), "--force", "--quiet"]) == 2

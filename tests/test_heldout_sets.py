@@ -39,7 +39,7 @@ def test_split_is_wired(split):
         assert _renderer(split, what) is getattr(m, name + sfx)
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(split=st.sampled_from(sorted(SETS)), sgs=st.lists(subgoals(), min_size=1, max_size=5),
        seed=st.integers(0, 2**31), strict=st.booleans(), sensor=st.sampled_from(SENSORS))
 def test_same_seed_same_text(split, sgs, seed, strict, sensor):

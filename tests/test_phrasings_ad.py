@@ -16,7 +16,7 @@ from ragnav_jax.language import phrasings_ad as ad
 from ragnav_jax.language.template_text import hyphenated, number_words
 from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
 
-FAST = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # ----------------------------------------------------------------------------------------------------
 # Tiny inputs

@@ -18,7 +18,7 @@ HEADS = ("lamp", "sofa", "record player", "drums", "toy chest", "fern", "dehumid
 PRE = ("teal", "oak", "black metal", "vintage", "glossy", "white-painted")
 STATES = ("switched on", "switched off", "open", "closed", "empty", "full")
 ROOMS = ("kitchen", "living room", "bathroom", "study", "nursery")
-FAST = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def make_target(head: str, pre: list[str], states: list[str], rels: tuple[Relation, ...] = ()) -> Target:

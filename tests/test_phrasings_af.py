@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from ragnav_jax.language.phrasings_af import hint_text_af, render_goal_af, render_instruction_af, render_sensor_af
 from ragnav_jax.language.types import RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
 
-FAST = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # ----------------------------------------------------------------------------------------------------
 # The reader's word lists (AF's templates, written out again here)

@@ -18,7 +18,7 @@ PRE = ("teal", "glossy", "retro", "olive")
 STATES = ("switched on", "open", "empty")
 ROOMS = ("music room", "pantry", "games room")
 REL_TYPES = tuple(ag.REL_WORDS)
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 @st.composite

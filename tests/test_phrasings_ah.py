@@ -17,7 +17,7 @@ from ragnav_jax.language.template_text import number_words
 from ragnav_jax.language.types import RELATION_TYPES, Location, Relation, SensorConstraint, Subgoal, Target
 
 SEEDS = st.integers(0, 2**31)
-FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # AH's words for each relation kind, as a reader of AH alone would list them
 CUES = {"near": ("near", "close to", "not far from", "within easy reach of"),

@@ -16,7 +16,7 @@ from ragnav_jax.language import phrasings_ai as A
 from ragnav_jax.language.template_text import number_words
 from ragnav_jax.language.types import COMPARATORS, READINGS, RELATION_TYPES, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # ----------------------------------------------------------------------------------------------------
 # A small reader of set AI's wording (its own tables, not the module's)

@@ -20,7 +20,7 @@ from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.template_text import number_words
 from ragnav_jax.language.types import READINGS, Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 NUM = r"-?\d+(?:\.\d+)?"
 
 # the set's own cues (lower case), as a test of what it writes, not a reader

@@ -18,7 +18,7 @@ from ragnav_jax.language.phrasings_ak import hint_text_ak, render_goal_ak, rende
 from ragnav_jax.language.template_text import number_words
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 STRICT_CUES = ("script order", "strictly in sequence", "story order", "in the order in which they are set",
                "in the order printed", "route order", "every split in order", "in the order i've written",

@@ -16,7 +16,7 @@ from ragnav_jax.language import phrasings_al as AL
 from ragnav_jax.language.template_text import attributes_and_states, hyphenated
 from ragnav_jax.language.types import READINGS, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 ALL_FIXED = [c for cs in AL.FIXED.values() for c in cs]
 ALL_OPEN = [c for cs in AL.OPEN.values() for c in cs]

@@ -14,7 +14,7 @@ from ragnav_jax.language import phrasings_am as M
 from ragnav_jax.language.template_text import attributes_and_states
 from ragnav_jax.language.types import READINGS, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 STRICT_CUES = (r"in sequence, no freelancing|in the order briefed|not a fin-kick sooner|strict procession|out of turn|"
                r"put your week in order|order is written in the sky|in sequence as wired|in order given|"

@@ -58,7 +58,7 @@ def _goal(seed: int, sg: Subgoal, sensor: SensorConstraint | None = None, xy=("3
     return ao.render_goal_ao(rng, sg, prefix=pre, tail=tail, hint=ao.hint_text_ao(rng, *xy) if xy else "")
 
 
-@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(sg=subgoals(), seed=st.integers(0, 2**31), hint=st.booleans(),
        x=st.sampled_from(["3.5", "-1.25", "0", "12"]), y=st.sampled_from(["2", "7.75", "-4.5"]))
 def test_goal_keeps_every_constraint(sg, seed, hint, x, y):
@@ -156,7 +156,7 @@ def test_instructions_cues_voices_and_frames():
     assert len(frames[1]) == 12 and len(frames[2]) == 24, (len(frames[1]), len(frames[2]))
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(sgs=st.lists(subgoals(), min_size=1, max_size=4), seed=st.integers(0, 2**31), strict=st.booleans())
 def test_same_seed_same_text_and_goals_verbatim(sgs, seed, strict):
     def run():

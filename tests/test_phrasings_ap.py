@@ -17,7 +17,7 @@ from ragnav_jax.language import phrasings_ap as AP
 from ragnav_jax.language.template_text import ONES, TENS
 from ragnav_jax.language.types import READINGS, Target
 
-SET = settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SET = settings(max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 NUM = r"-?\d+(?:\.\d+)?"
 
 # ------------------------------------------------------------------------------------------------ helpers

@@ -18,7 +18,7 @@ from ragnav_jax.config import EPISODE_SPLITS
 from ragnav_jax.language import phrasings_dev10 as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # M's words for each relation, written here apart from the templates' own table
 M_REL_WORDS = {"near": ("near", "close to", "not far from", "around"), "next_to": ("next to", "adjacent to"),
                "beside": ("beside", "at the side of"), "by": ("by",), "on": ("on", "sitting on", "on top of"),

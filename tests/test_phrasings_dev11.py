@@ -18,7 +18,7 @@ from ragnav_jax.config import EPISODE_SPLITS
 from ragnav_jax.language import phrasings_dev11 as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # N's words for each relation, written here apart from the templates' own table
 N_REL_WORDS = {"near": ("near", "nr", "close of", "close to"), "next_to": ("next to", "nxt to"),
                "beside": ("beside",), "by": ("by",), "on": ("on", "on the top of", "on top of"), "under": ("under", "below"),

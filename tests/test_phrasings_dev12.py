@@ -21,7 +21,7 @@ from ragnav_jax.language import phrasings_dev12 as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # O's words for each relation, written here apart from the templates' own table
 O_REL_WORDS = {"near": ("near", "steps from", "short way from"), "next_to": ("next to",),
                "beside": ("beside",), "by": ("by",), "on": ("on", "on top of"), "under": ("under", "underneath", "below"),

@@ -340,7 +340,7 @@ def test_instruction_numbers_are_the_goals_numbers():
 _goals = st.tuples(target_strategy(HEADS, MODS), st.one_of(st.none(), st.sampled_from(ROOMS)), _sensors, st.booleans())
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(_goals, min_size=1, max_size=5), st.integers(0, 2**31), st.sampled_from(("strict", "free")))
 def test_renderers_never_raise_and_write_every_piece(goals, seed, order):
     rng = gen(seed)

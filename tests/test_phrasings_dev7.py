@@ -128,7 +128,7 @@ def comparator_of(text):
     return None
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(reading=st.sampled_from(("temperature_c", "ndvi", "humidity_pct")),
        cmp=st.sampled_from(("gt", "ge", "lt", "le", "approx")), seed=st.integers(0, 10**6),
        value=st.one_of(st.integers(-30, 999).map(float), st.sampled_from((0.05, 0.38, 0.7, 0.65, 0.9, 22.5))))
@@ -169,7 +169,7 @@ def test_superlatives(reading, cmp):
             assert g.index("out of every lamp") < g.index("study")
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(x=st.floats(0, 30).map(lambda v: round(v, 1)), y=st.floats(0, 30).map(lambda v: round(v, 1)),
        seed=st.integers(0, 10**6), short=st.booleans())
 def test_hints_carry_the_given_numbers(x, y, seed, short):
@@ -276,7 +276,7 @@ def _phrases(t):
     return out
 
 
-@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(goals=st.lists(st.tuples(target_strategy(HEADS, MODS), st.sampled_from((None, *ROOMS))), min_size=1, max_size=4),
        seed=st.integers(0, 10**6), order=st.sampled_from(("strict", "free")))
 def test_renderers_never_raise_and_write_every_piece(goals, seed, order):

@@ -18,7 +18,7 @@ from ragnav_jax.language import phrasings_dev8 as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import RELATION_TYPES, Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 HEADS = ("lamp", "sofa", "hi-fi speaker", "night-light", "mini-fridge", "ping-pong table", "shelves", "drums",
          "chest freezer", "snake plant", "toolbox", "cactus", "appliance", "tool chest")

@@ -19,7 +19,7 @@ from ragnav_jax.language import phrasings_dev9 as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Location, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # E's own words for relations, on top of the dev8 reader's
 E_REL_WORDS = {k: v + {"near": ("a little way from", "close by", "vicinity of"), "next_to": ("up against",),
                        "behind": ("round the back of",), "opposite": ("across the room from",), "on": ("on top of", "resting on"), "under": ("below",),

@@ -20,7 +20,7 @@ from ragnav_jax.language import phrasings_heldout as H
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # P's words for each relation, written here apart from the templates' own table
 P_REL_WORDS = {"near": ("near", "close by", "within reach of", "proximity to", "far off"), "next_to": ("next to",),
                "beside": ("beside",), "by": ("by",), "on": ("on", "atop"), "under": ("under", "beneath"),

@@ -19,7 +19,7 @@ from test_phrasings_dev8 import _has, constraints, read_numbers, subgoals
 from ragnav_jax.language import phrasings_q as Q
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # Q's words for each relation, written here apart from the templates' own table
 Q_REL_WORDS = {"near": ("near", "few paces of", "couple of steps from", "not far from", "close to"),
                "next_to": ("next to", "adjoining", "alongside"), "beside": ("beside",), "by": ("by",),

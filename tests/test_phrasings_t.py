@@ -28,7 +28,7 @@ from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, _has, constraints, s
 from ragnav_jax.language import phrasings_t as T
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # T's words for each relation, written here apart from the templates' own table (a reader's list)
 T_REL_WORDS = {

@@ -34,7 +34,7 @@ from ragnav_jax.language import phrasings_train1 as T
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # The whole phrases a reader of T1's goals splits on, each with its relation type (written apart from the templates)
 T1_REL_PHRASES = {

@@ -34,7 +34,7 @@ from ragnav_jax.language import phrasings_train2 as T
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # ----------------------------------------------------------------------------------------------------
 # A reader of the set's goals (its phrase list is written apart from the templates)

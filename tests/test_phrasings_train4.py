@@ -33,7 +33,7 @@ from ragnav_jax.language import phrasings_train4 as T
 from ragnav_jax.language.episodes import UNSEEN_TEMPLATES, _renderer
 from ragnav_jax.language.types import Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # The whole phrases a reader of train4's goals splits on, each with its relation type (written apart from the
 # templates)

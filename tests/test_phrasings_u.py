@@ -32,7 +32,7 @@ from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoal
 from ragnav_jax.language import phrasings_u as U
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # U's words for each relation, written here apart from the templates' own table (a reader's list)
 U_REL_WORDS = {

@@ -32,7 +32,7 @@ from test_phrasings_dev8 import HEADS, MODS, ROOMS, STATES, constraints, subgoal
 from ragnav_jax.language import phrasings_y as Y
 from ragnav_jax.language.types import Location, Relation, SensorConstraint, Subgoal, Target
 
-SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # The whole phrases a reader of Y's goals splits on, each with its relation type (written apart from the templates)
 Y_REL_PHRASES = {
