@@ -828,6 +828,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_an": ("phrasings_an", "an"),
                     "unseen_ao": ("phrasings_ao", "ao"),
                     "unseen_ap": ("phrasings_ap", "ap"),
+                    "unseen_aq": ("phrasings_aq", "aq"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
