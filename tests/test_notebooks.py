@@ -30,6 +30,7 @@ def test_notebook_runs_top_to_bottom(path, tiny_run, monkeypatch, tmp_path):
     monkeypatch.setenv("RAGNAV_EPISODES", str(episodes))
     monkeypatch.setenv("RAGNAV_CONFIG", "")
     monkeypatch.setenv("RAGNAV_OVERRIDES", " ".join(SMALL))
+    monkeypatch.setenv("RAGNAV_NAV_EPISODES", "3")  # the navigation notebook: every cell, on fewer episodes
     monkeypatch.setenv("JAX_PLATFORMS", "cpu")
     monkeypatch.setenv("MPLBACKEND", "Agg")
     nb = nbformat.read(path, as_version=4)
