@@ -984,3 +984,15 @@ def test_a_reading_after_an_unknown_verb_stays_with_its_goal():
     sgs = parse_instruction("Go to the kiln boasting the top air temperature reading, then the loom.").subgoals
     assert len(sgs) == 2 and sgs[1].target.head == "loom"
     assert sgs[0].text.endswith("the top air temperature reading") and sgs[0].target.head.startswith("kiln")
+
+
+def test_who_is_expected_at_a_place_is_no_goal():
+    """'your excellency is expected at the loom': a few words, 'is' or 'are' and a word of attendance before a
+    preposition say who is to go there; the goal is the loom. A goal said to be somewhere stays the goal ('the
+    samovar is kept in the scullery')."""
+    sgs = parse_instruction("Your Excellency is expected at the loom near the cot; the guests are awaited at the "
+                            "warmest samovar.").subgoals
+    assert [s.target.head for s in sgs] == ["loom", "samovar"]
+    assert [(r.type, r.anchor.head) for r in sgs[0].target.relations] == [("near", "cot")]
+    assert [s.target.head for s in parse_instruction("the samovar is kept in the scullery, then the loom").subgoals] == [
+        "samovar", "loom"]

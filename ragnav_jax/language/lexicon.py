@@ -484,6 +484,9 @@ ORDINAL_WORDS = ("first", "next", "second", "third", "fourth", "fifth", "sixth",
 # opening with one of these words and naming nothing (no determiner) is dropped.
 SUBORDINATORS = frozenset("once when whenever after upon having as soon if".split())
 SUBJECT_PRONOUNS = frozenset("you you've you're you'll you'd we we've we're i i've i'm".split())
+# Words that say someone is to attend a place ("your excellency is expected at the bureau", "the guests are awaited
+# at the harp"): after "is" or "are" they make what precedes them an addressee, not a goal (`parser._attendance`).
+ATTENDANCE = frozenset("expected awaited requested invited summoned wanted needed required due".split())
 
 # Verbs and politeness that introduce a goal ("please head over to", "I need you to check").
 LEAD_PHRASES = (

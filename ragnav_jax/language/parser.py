@@ -1170,14 +1170,25 @@ def _subordinate_lead(tokens: list[str]) -> int:
     return 0
 
 
+def _attendance(tokens: list[str]) -> int:
+    """Length of an opening that says who is to attend a place ("your excellency is expected at [the bureau]", "the
+    guests are awaited at [the harp]"): at most three words, "is" or "are", an attendance word
+    (`lexicon.ATTENDANCE`) and a preposition before a determiner; 0 if there is none."""
+    for j in range(1, min(4, len(tokens) - 3) + 1):
+        if (tokens[j] in ("is", "are") and tokens[j + 1] in L.ATTENDANCE and tokens[j + 2] in _INTRO_PREPS
+                and tokens[j + 3] in L.DETERMINERS and all(w.isalpha() for w in tokens[:j])):
+            return j + 3
+    return 0
+
+
 def _strip_leaders(tokens: list[str]) -> tuple[list[str], bool]:
     """Drops politeness, verbs and order words in front and fillers behind; also says whether any led."""
     n0 = len(tokens)
     tokens = _strip_framing(tokens)
     changed, ing = True, False
     while changed and tokens:
-        sub = _subordinate_lead(tokens)
-        if sub:  # "once you've reached the kiln": the kiln is the goal
+        sub = _subordinate_lead(tokens) or _attendance(tokens)
+        if sub:  # "once you've reached the kiln", "your excellency is expected at the kiln": the kiln is the goal
             tokens, changed = tokens[sub:], True
             continue
         before = tokens
