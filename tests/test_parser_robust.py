@@ -996,3 +996,14 @@ def test_who_is_expected_at_a_place_is_no_goal():
     assert [(r.type, r.anchor.head) for r in sgs[0].target.relations] == [("near", "cot")]
     assert [s.target.head for s in parse_instruction("the samovar is kept in the scullery, then the loom").subgoals] == [
         "samovar", "loom"]
+
+
+def test_a_one_word_sentence_is_no_goal_where_the_goals_have_determiners():
+    """'...ring out to the samovar. Stand.': a sentence of one word with no determiner, where the instruction's goals
+    have theirs, is a command or a sign-off. A list that drops its determiners drops them for every goal, and its
+    one-word items stay goals."""
+    assert [s.target.head for s in parse_instruction("Look to! Ring out to the samovar by the loom. Stand.").subgoals] == [
+        "samovar"]
+    assert [s.target.head for s in parse_instruction("samovar. loom. hatstand.").subgoals] == ["samovar", "loom", "hatstand"]
+    assert [s.target.head for s in parse_instruction("Go to the samovar, then the loom and hatstand.").subgoals] == [
+        "samovar", "loom", "hatstand"]

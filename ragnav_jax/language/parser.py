@@ -1868,6 +1868,11 @@ def parse_instruction(text: str) -> TaskChain:
         goals.append(p)
     if pending is not None and goals:
         _merge(goals[-1], pending)
+    if any(g.det for g in goals):  # "...ring out to the credenza. Stand.": a one-word sentence with no determiner,
+        # where the other goals have theirs, is a command or a sign-off (a list that drops determiners drops them all)
+        goals = [g for g in goals if not (
+            g.connector in (".", "!", "?") and not g.det and g.node is not None and len(g.node.words) == 1
+            and not (g.room or g.locations or g.sensors or g.relations or g.node.relations or g.node.states))] or goals
     if not goals:
         raise ParseError(
             "no recognisable goal in the instruction: name at least one place or object to go to, "
