@@ -1872,7 +1872,7 @@ def parse_instruction(text: str) -> TaskChain:
         # where the other goals have theirs, is a command or a sign-off (a list that drops determiners drops them all)
         goals = [g for g in goals if not (
             g.connector in (".", "!", "?") and not g.det and g.node is not None and len(g.node.words) == 1
-            and not (g.room or g.locations or g.sensors or g.relations or g.node.relations or g.node.states))] or goals
+            and not (g.room or g.locations or g.sensors or g.relations or g.node.relations or g.node.states))]
     if not goals:
         raise ParseError(
             "no recognisable goal in the instruction: name at least one place or object to go to, "
