@@ -829,6 +829,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ao": ("phrasings_ao", "ao"),
                     "unseen_ap": ("phrasings_ap", "ap"),
                     "unseen_aq": ("phrasings_aq", "aq"),
+                    "unseen_ar": ("phrasings_ar", "ar"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
