@@ -830,6 +830,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ap": ("phrasings_ap", "ap"),
                     "unseen_aq": ("phrasings_aq", "aq"),
                     "unseen_ar": ("phrasings_ar", "ar"),
+                    "unseen_as": ("phrasings_as", "as"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
