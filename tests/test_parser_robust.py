@@ -1007,3 +1007,30 @@ def test_a_one_word_sentence_is_no_goal_where_the_goals_have_determiners():
     assert [s.target.head for s in parse_instruction("samovar. loom. hatstand.").subgoals] == ["samovar", "loom", "hatstand"]
     assert [s.target.head for s in parse_instruction("Go to the samovar, then the loom and hatstand.").subgoals] == [
         "samovar", "loom", "hatstand"]
+
+
+def test_an_instrument_read_off_names_the_reading():
+    """'the samovar giving the highest reading on the thermometer', 'reading over 40 degrees on the thermometer':
+    the instrument read off is the reading it gives (lexicon 'thermometer reading'), neither a goal nor an anchor;
+    a verb of giving a reading ('giving', 'producing', 'logging') is no part of the noun."""
+    sg, = parse_instruction("Go to the samovar in the scullery giving the highest reading on the thermometer.").subgoals
+    assert (sg.target.head, sg.room, sg.target.relations) == ("samovar", "scullery", ())
+    assert [(c.reading, c.comparator) for c in sg.sensors] == [("temperature_c", "max")]
+    sg, = parse_instruction("Go to the loom reading over 40 degrees Celsius on the thermometer.").subgoals
+    assert (sg.target.head, sg.target.relations) == ("loom", ())
+    assert [(c.reading, c.comparator, c.value) for c in sg.sensors] == [("temperature_c", "gt", 40.0)]
+    for verb in ("producing", "logging", "putting out", "giving off"):
+        sg, = parse_instruction(f"Go to the samovar {verb} a temperature of 60 degrees.").subgoals
+        assert sg.target.head == "samovar" and [c.value for c in sg.sensors] == [60.0]
+    assert [s.target.head for s in parse_instruction("Check the hygrometer, then the loom.").subgoals] == [
+        "hygrometer", "loom"]
+
+
+def test_what_a_verb_ends_on_is_the_goal():
+    """'...; and finish on the wheelbarrow': after a verb that leads a segment, 'on the X' is the goal, not a
+    relation of the goal before; 'the lamp on the table' keeps its anchor."""
+    sgs = parse_instruction("Pot the samovar (scullery); and finish on the loom in the attic.").subgoals
+    assert [(s.target.head, s.room, s.target.relations) for s in sgs] == [("samovar", "scullery", ()),
+                                                                          ("loom", "attic", ())]
+    sg, = parse_instruction("Go to the samovar on the dresser.").subgoals
+    assert [(r.type, r.anchor.head) for r in sg.target.relations] == [("on", "dresser")]

@@ -96,6 +96,9 @@ _NUM_END = r"(?!\.\d)"
 READ_ALT = _alt(L.READING_NAMES)
 CMP_ALT = _alt(L.COMPARATOR_PHRASES)
 EXT_ALT = _alt(L.EXTREME_WORDS)
+# instruments read off: "thermometer reading" (lexicon.READING_NAMES) -> "thermometer"
+_INSTRUMENTS = "|".join(sorted(k.removesuffix(" reading") for k in L.READING_NAMES if k.endswith(" reading")
+                               and " " not in k.removesuffix(" reading")))
 UNIT = (
     r"(?:°\s*[cf]\b|°|degrees?(?:\s+(?:celsius|centigrade|fahrenheit|c|f)\b)?"
     r"|degs?\b\.?(?:\s*(?:celsius|centigrade|fahrenheit|c|f)\b)?|celsius\b|centigrade\b"
@@ -187,7 +190,9 @@ _VERB_BEFORE_SENSOR = re.compile(
     r"(?:running|runs|reading|reads|showing|shows|measuring|measures|registering|registers|sitting|sits|operating"
     r"|operates|kept|set|heated|cooled|holding|holds|staying|stays|scoring|scores|rated|rating|hovering|hovers"
     r"|sitting|sits|exhibiting|exhibits|displaying|displays|recording|records|show|exhibit|display|record|register|read"
-    r"|drawing|draws|using|uses|consuming|consumes|pulling|pulls|weighing|weighs)(?:\s+(?:at|to|around))?(?:\s+(?:the|an?))?\s+(?=(?P<k>⟪[a-z]+⟫))"
+    r"|drawing|draws|using|uses|consuming|consumes|pulling|pulls|weighing|weighs|giving(?:\s+off)?|gives(?:\s+off)?"
+    r"|producing|produces|putting\s+out|puts\s+out|returning|returns|emitting|emits|generating|generates|outputting"
+    r"|outputs|logging|logs)(?:\s+(?:at|to|around))?(?:\s+(?:the|an?))?\s+(?=(?P<k>⟪[a-z]+⟫))"
 )
 _SENS_C = re.compile(
     r"(?:\b(?:at|of|with|reading|showing|measuring|registering)\s+)?"
@@ -360,7 +365,7 @@ _RELS = _by_first_word(L.RELATION_PHRASES)
 _ROOM_PREPS = frozenset({"in", "inside", "within", "into", "inside of"})
 _DANGLING = frozenset(
     "that which who is are that's which's whose where reads shows measures measuring reading showing currently "
-    "located placed situated but".split()
+    "located placed situated but giving producing returning emitting generating outputting logging".split()
 )
 
 # ----------------------------------------------------------------------------------------------------
@@ -757,6 +762,12 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      "the thing "),
     # "there's a record player on the credenza - go to it": the object a sentence introduces is the goal.
     (r"\b(?:there's|there\s+is|there\s+should\s+be|you'll\s+find|you\s+will\s+find)\s+(?:a|an|one)\s+(?=[a-z])", "the "),
+    # "the highest reading on the thermometer", "above 30 degrees on the thermometer": the instrument that gives a
+    # reading names the reading (lexicon.READING_NAMES: "thermometer reading"), not a goal or an anchor.
+    (rf"\b(?P<e>{EXT_ALT})\s+(?:reading|measurement|value)\s+(?:on|from|off|according\s+to)\s+(?:the|its|a)\s+"
+     rf"(?P<i>{_INSTRUMENTS})\b", r"\g<e> \g<i> reading"),
+    (rf"(?P<u>{UNIT})\s+(?:(?:as\s+)?(?:shown|read|measured)\s+)?(?:on|by|from|according\s+to)\s+(?:the|its|a)\s+"
+     rf"(?:{_INSTRUMENTS})\b", r"\g<u>"),
     # "need a reading from the water cooler", "take a measurement off the kiln": the object read is the goal.
     (r"\b(?:an?|the|some|another)\s+(?:(?:temperature|humidity|quick|fresh|new)\s+)?(?:reading|readings|measurement"
      r"|measurements)\s+(?:from|of|off|on|at)\s+(?=(?:the|a|an|my|our|that|this)\b)", ""),
@@ -1538,9 +1549,10 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
         if not anchor or all(w in L.FILLER_NOUNS and w not in L.PRONOUN_ANCHORS for w in anchor):
             continue  # "with" before a sensor phrase, "nearby"
         node = _Node(anchor)
-        if not words and piece.led and current is top and not top.relations and prep in ("at", "to"):
+        if not words and piece.led and current is top and not top.relations and prep in ("at", "to", "on"):
             # "start in the library at the reading lamp", "go in the den to the sofa": after the verb and its
-            # room, the place the robot goes to is the goal, not an anchor
+            # room, the place the robot goes to is the goal, not an anchor; so is what a verb ends or starts on
+            # ("and finish on the wheelbarrow")
             words, top = anchor, node
             current = node
             continue
