@@ -831,6 +831,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_aq": ("phrasings_aq", "aq"),
                     "unseen_ar": ("phrasings_ar", "ar"),
                     "unseen_as": ("phrasings_as", "as"),
+                    "unseen_at": ("phrasings_at", "at"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 
