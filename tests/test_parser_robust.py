@@ -1034,3 +1034,16 @@ def test_what_a_verb_ends_on_is_the_goal():
                                                                           ("loom", "attic", ())]
     sg, = parse_instruction("Go to the samovar on the dresser.").subgoals
     assert [(r.type, r.anchor.head) for r in sg.target.relations] == [("on", "dresser")]
+
+
+def test_a_labelled_reading_with_an_extreme_is_a_superlative():
+    """'the fern (NDVI: the lowest going)', 'the samovar, temperature: highest': a reading given as a labelled field
+    with an extreme is that reading's superlative; 'going' adds nothing ('the highest temperature going')."""
+    for text in ("Go to the fern (NDVI: the lowest going), then the loom.", "Go to the fern, ndvi: lowest; then the loom."):
+        sgs = parse_instruction(text).subgoals
+        assert [s.target.head for s in sgs] == ["fern", "loom"]
+        assert [(c.reading, c.comparator) for c in sgs[0].sensors] == [("ndvi", "min")]
+    sg, = parse_instruction("Go to the samovar with the highest temperature going.").subgoals
+    assert sg.target.head == "samovar" and [c.comparator for c in sg.sensors] == ["max"]
+    sg, = parse_instruction("Go to the samovar (temperature: 40 degrees or more).").subgoals
+    assert [(c.comparator, c.value) for c in sg.sensors] == [("ge", 40.0)]

@@ -768,6 +768,12 @@ _CANONICAL: tuple[tuple[re.Pattern, str], ...] = tuple((re.compile(rx), rep) for
      rf"(?P<i>{_INSTRUMENTS})\b", r"\g<e> \g<i> reading"),
     (rf"(?P<u>{UNIT})\s+(?:(?:as\s+)?(?:shown|read|measured)\s+)?(?:on|by|from|according\s+to)\s+(?:the|its|a)\s+"
      rf"(?:{_INSTRUMENTS})\b", r"\g<u>"),
+    # A reading given as a labelled field with an extreme, "(ndvi: the lowest going)", "temperature = highest": the
+    # superlative of that reading ("going", "around", "there is": the extreme of what there is).
+    (rf"\b(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score))?\s*[:=]\s*(?:the\s+)?(?P<e>{EXT_ALT})\b"
+     r"(?:\s+(?:going|around|there\s+is|to\s+be\s+had|to\s+be\s+found|on\s+offer))?", r"the \g<e> \g<rd>"),
+    (rf"\b(?P<e>{EXT_ALT})\s+(?P<rd>{READ_ALT})(?:\s+(?:reading|value|level|score))?\s+(?:going|around|there\s+is"
+     r"|to\s+be\s+had|to\s+be\s+found|on\s+offer)\b", r"\g<e> \g<rd>"),
     # "need a reading from the water cooler", "take a measurement off the kiln": the object read is the goal.
     (r"\b(?:an?|the|some|another)\s+(?:(?:temperature|humidity|quick|fresh|new)\s+)?(?:reading|readings|measurement"
      r"|measurements)\s+(?:from|of|off|on|at)\s+(?=(?:the|a|an|my|our|that|this)\b)", ""),
