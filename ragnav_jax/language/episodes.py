@@ -832,6 +832,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_ar": ("phrasings_ar", "ar"),
                     "unseen_as": ("phrasings_as", "as"),
                     "unseen_at": ("phrasings_at", "at"),
+                    "unseen_au": ("phrasings_au", "au"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 

@@ -66,12 +66,13 @@ LENGTHS = (32, 64, MAX_TOKENS)
 # (`unseen_ai`), that of round 31, AJ (`unseen_aj`), that of round 32, AK (`unseen_ak`), that of round 33, AL
 # (`unseen_al`), that of round 34, AM (`unseen_am`), that of round 35, AN (`unseen_an`), that of round 36, AO
 # (`unseen_ao`), that of round 37, AP (`unseen_ap`), a second fresh measure of round 37's design, AQ
-# (`unseen_aq`), that of round 38, AR (`unseen_ar`) and AS (`unseen_as`), those of round 39, and AT (`unseen_at`),
-# written for round 40. The next change of the readers adds a new fresh set here before it is measured.
+# (`unseen_aq`), that of round 38, AR (`unseen_ar`) and AS (`unseen_as`), those of round 39, AT (`unseen_at`),
+# written for round 40, and AU (`unseen_au`), written for round 41. The next change of the readers adds a new
+# fresh set here before it is measured.
 HELD_OUT = ("unseen_aa", "unseen_ab", "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag",
             "unseen_ah", "unseen_ai", "unseen_aj", "unseen_ak", "unseen_al",
             "unseen_am", "unseen_an", "unseen_ao", "unseen_ap", "unseen_aq",
-            "unseen_ar", "unseen_as", "unseen_at")
+            "unseen_ar", "unseen_as", "unseen_at", "unseen_au")
 # values a random comparison is written with in augmented examples, per reading
 _VALUES = {"temperature_c": (-20, -18, -4, 0, 4, 18, 21, 22, 25, 30, 38, 40, 45, 60, 90, 150, 180, 220),
            "humidity_pct": (15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90),
