@@ -67,8 +67,8 @@ LENGTHS = (32, 64, MAX_TOKENS)
 # (`unseen_al`), that of round 34, AM (`unseen_am`), that of round 35, AN (`unseen_an`), that of round 36, AO
 # (`unseen_ao`), that of round 37, AP (`unseen_ap`), a second fresh measure of round 37's design, AQ
 # (`unseen_aq`), that of round 38, AR (`unseen_ar`) and AS (`unseen_as`), those of round 39, AT (`unseen_at`),
-# written for round 40, and AU (`unseen_au`), written for round 41. The next change of the readers adds a new
-# fresh set here before it is measured.
+# that of round 40, and AU (`unseen_au`), a second fresh measure of round 40's design. The next change of the
+# readers adds a new fresh set here before it is measured.
 HELD_OUT = ("unseen_aa", "unseen_ab", "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag",
             "unseen_ah", "unseen_ai", "unseen_aj", "unseen_ak", "unseen_al",
             "unseen_am", "unseen_an", "unseen_ao", "unseen_ap", "unseen_aq",

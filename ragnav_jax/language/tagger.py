@@ -68,10 +68,10 @@ LINE_BREAK = "|"  # the word a line break is read as: lists and headings are lai
 # (`unseen_aj`), that of round 32, AK (`unseen_ak`), that of round 33, AL (`unseen_al`), that of round 34, AM
 # (`unseen_am`), that of round 35, AN (`unseen_an`), that of round 36, AO (`unseen_ao`), that of round 37, AP
 # (`unseen_ap`), a second fresh measure of round 37's design, AQ (`unseen_aq`), that of round 38, AR (`unseen_ar`)
-# and AS (`unseen_as`), those of round 39, AT (`unseen_at`), written for round 40, and AU (`unseen_au`), written
-# for round 41. Up to round 22 the tagger learnt from the seen templates and the twelve development sets alone;
-# round 23 added the sets measured fresh in earlier rounds (P to Z) and the four training sets, as the sensor
-# reader did, and round 24 W, round 23's fresh set
+# and AS (`unseen_as`), those of round 39, AT (`unseen_at`), that of round 40, and AU (`unseen_au`), a second
+# fresh measure of round 40's design. Up to round 22 the tagger learnt from the seen templates and the twelve
+# development sets alone; round 23 added the sets measured fresh in earlier rounds (P to Z) and the four training
+# sets, as the sensor reader did, and round 24 W, round 23's fresh set
 HELD_OUT = ("unseen_aa", "unseen_ab", "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag",
             "unseen_ah", "unseen_ai", "unseen_aj", "unseen_ak", "unseen_al",
             "unseen_am", "unseen_an", "unseen_ao", "unseen_ap", "unseen_aq",
