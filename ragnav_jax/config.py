@@ -29,7 +29,7 @@ EPISODE_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_de
                   "unseen_v", "unseen_x", "unseen_y", "unseen_z", "unseen_w", "unseen_aa", "unseen_ab",
                   "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag", "unseen_ah", "unseen_ai",
                   "unseen_aj", "unseen_ak", "unseen_al", "unseen_am", "unseen_an", "unseen_ao", "unseen_ap",
-                  "unseen_aq", "unseen_ar", "unseen_as", "unseen_at", "unseen_au", "unseen")
+                  "unseen_aq", "unseen_ar", "unseen_as", "unseen_at", "unseen_au", "unseen_av", "unseen")
 
 ROOM_TYPES = (
     "kitchen",

@@ -1,5 +1,5 @@
 """What every held-out sentence set written after P shares (Q, R, S, T, U, V, X, Y, Z, W, AA, AB, AC, AD, AE,
-AF, AG, AH, AI, AJ, AK, AL, AM, AN, AO, AP, AQ, AR, AS, AT and AU): its split is wired to its own module's four
+AF, AG, AH, AI, AJ, AK, AL, AM, AN, AO, AP, AQ, AR, AS, AT, AU and AV): its split is wired to its own module's four
 functions, and the same seed writes the same text. Each set's own wording is checked in tests/test_phrasings_<x>.py."""
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ SETS = {"unseen_q": "q", "unseen_r": "r", "unseen_s": "s", "unseen_t": "t", "uns
         "unseen_aj": "aj", "unseen_ak": "ak", "unseen_al": "al", "unseen_am": "am",
         "unseen_an": "an", "unseen_ao": "ao", "unseen_ap": "ap",
         "unseen_aq": "aq", "unseen_ar": "ar", "unseen_as": "as", "unseen_at": "at",
-        "unseen_au": "au"}
+        "unseen_au": "au", "unseen_av": "av"}
 SENSORS = (SensorConstraint("ndvi", "approx", 0.65), SensorConstraint("humidity_pct", "le", 40.0),
            SensorConstraint("temperature_c", "ge", 40.0))
 

@@ -833,6 +833,7 @@ UNSEEN_TEMPLATES = {"unseen_dev": ("phrasings", "unseen"), "unseen_dev2": ("phra
                     "unseen_as": ("phrasings_as", "as"),
                     "unseen_at": ("phrasings_at", "at"),
                     "unseen_au": ("phrasings_au", "au"),
+                    "unseen_av": ("phrasings_av", "av"),
                     "unseen": ("phrasings_heldout", "heldout")}
 
 

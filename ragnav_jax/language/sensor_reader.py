@@ -72,7 +72,7 @@ LENGTHS = (32, 64, MAX_TOKENS)
 HELD_OUT = ("unseen_aa", "unseen_ab", "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag",
             "unseen_ah", "unseen_ai", "unseen_aj", "unseen_ak", "unseen_al",
             "unseen_am", "unseen_an", "unseen_ao", "unseen_ap", "unseen_aq",
-            "unseen_ar", "unseen_as", "unseen_at", "unseen_au")
+            "unseen_ar", "unseen_as", "unseen_at", "unseen_au", "unseen_av")
 # values a random comparison is written with in augmented examples, per reading
 _VALUES = {"temperature_c": (-20, -18, -4, 0, 4, 18, 21, 22, 25, 30, 38, 40, 45, 60, 90, 150, 180, 220),
            "humidity_pct": (15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90),

@@ -75,7 +75,7 @@ LINE_BREAK = "|"  # the word a line break is read as: lists and headings are lai
 HELD_OUT = ("unseen_aa", "unseen_ab", "unseen_ac", "unseen_ad", "unseen_ae", "unseen_af", "unseen_ag",
             "unseen_ah", "unseen_ai", "unseen_aj", "unseen_ak", "unseen_al",
             "unseen_am", "unseen_an", "unseen_ao", "unseen_ap", "unseen_aq",
-            "unseen_ar", "unseen_as", "unseen_at", "unseen_au")
+            "unseen_ar", "unseen_as", "unseen_at", "unseen_au", "unseen_av")
 TRAIN_SPLITS = ("seen", "unseen_dev", "unseen_dev2", "unseen_dev3", "unseen_dev4", "unseen_dev5", "unseen_dev6",
                 "unseen_dev7", "unseen_dev8", "unseen_dev9", "unseen_dev10", "unseen_dev11", "unseen_dev12",
                 "unseen_train1", "unseen_train2", "unseen_train3", "unseen_train4", "unseen", "unseen_q", "unseen_r",
