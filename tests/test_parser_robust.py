@@ -1047,3 +1047,19 @@ def test_a_labelled_reading_with_an_extreme_is_a_superlative():
     assert sg.target.head == "samovar" and [c.comparator for c in sg.sensors] == ["max"]
     sg, = parse_instruction("Go to the samovar (temperature: 40 degrees or more).").subgoals
     assert [(c.comparator, c.value) for c in sg.sensors] == [("ge", 40.0)]
+
+
+@pytest.mark.parametrize("preamble", ["Big table, this one, and it all goes out together.", "THE GRAND TOUR",
+                                      "Greetings from the seaside! Dear robot, could you do a round for us?",
+                                      "The journey, in two stages:", "Morning all"])
+@pytest.mark.parametrize("mark", ["•", "-", "1.", "(a)", "[ ]"])
+def test_a_lists_preamble_names_no_goal(preamble, mark):
+    """The lines before a list of marked items name the list, greet or set the scene: no goal, whatever its
+    nouns ('big table', 'the journey'); a verb that sends the robot somewhere keeps its goal; without a list of
+    two or more items, nothing changes."""
+    items = "\n".join(f"{mark} the {h}" for h in ("samovar", "loom"))
+    heads = [s.target.head for s in parse_instruction(f"{preamble}\n{items}").subgoals]
+    assert heads == ["samovar", "loom"]
+    heads = [s.target.head for s in parse_instruction(f"Please visit the kiln first, then:\n{items}").subgoals]
+    assert heads == ["kiln", "samovar", "loom"]
+    assert [s.target.head for s in parse_instruction(f"{preamble}\n{mark} the samovar").subgoals][-1] == "samovar"

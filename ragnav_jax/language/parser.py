@@ -1757,8 +1757,35 @@ def _unglue(seg: str, marks: _Marks) -> list[str]:
     return [seg]
 
 
-def parse_instruction(text: str) -> TaskChain:
-    """Parses a free-text multi-goal instruction into a TaskChain; raises ParseError on bad input."""
+# A line that opens a list item: a bullet or dash, "1.", "2)", "(a)", "[ ]" (round 41).
+_ITEM_LINE = re.compile(r"^[ \t]*(?:[•·*▪►‣][ \t]*|(?:[–—-]|\(?\d{1,2}[.)]|\(?[a-h]\)|\[[ xX]?\])[ \t]+)\S")
+
+
+def _preamble(text: str) -> str:
+    """The lines before a list of two or more marked items ("Big table, this one.\n• the fern\n• the kiln" ->
+    "Big table, this one."), up to a colon on the last of them that the first marked item follows ("Places to
+    check: - the fern\n- the kiln" -> "Places to check:"), or "" when the text holds no such list or opens with it."""
+    lines = text.splitlines()
+    items = [i for i, line in enumerate(lines) if _ITEM_LINE.match(line)]
+    if len(items) < 2 or items[0] == 0:
+        return ""
+    pre = lines[: items[0]]
+    head, colon, tail = pre[-1].rpartition(":")
+    if colon and _ITEM_LINE.match(tail):
+        pre[-1] = head + colon
+    return "\n".join(pre)
+
+
+def _sends(seg: str) -> bool:
+    """Whether a verb the lexicon knows leads the segment, after any politeness ("please go to the kiln")."""
+    tokens, changed = [m.group(0) for m in _TOKEN.finditer(seg)], True
+    while changed and tokens:
+        tokens, changed = _strip_phrases(tokens, _LEADS)
+    return _strip_phrases(tokens, _VERBS)[1]
+
+
+def _segments(text: str, marks: _Marks) -> tuple[list[tuple[str, str]], str]:
+    """Normalised `text` cut into (connector, segment) pairs, and the order it states ("strict" or "free")."""
     s = _normalise(text)
     m = _MULTIDOT.search(s)
     if m:
@@ -1767,7 +1794,6 @@ def parse_instruction(text: str) -> TaskChain:
     if m:  # a task chain holds goals, not a choice between objects
         raise ParseError(f"'{m.group(0)}': a choice between objects is not supported; name the one to visit "
                          "(or list both to visit both)")
-    marks = _Marks()
     s = _number_words(_canonical(s))
     s = _FIRST_OF_ALL.sub("first", s)
     s = _cut(s, marks)
@@ -1784,8 +1810,27 @@ def parse_instruction(text: str) -> TaskChain:
     segments = [(parts[k - 1].strip() if k else "", parts[k]) for k in range(0, len(parts), 2)]
     # Two items run together with no word the parser knows between them are two segments.
     segments = [(c if i == 0 else ",", piece) for c, seg in segments for i, piece in enumerate(_unglue(seg, marks))]
+    return segments, order
+
+
+def parse_instruction(text: str) -> TaskChain:
+    """Parses a free-text multi-goal instruction into a TaskChain; raises ParseError on bad input."""
+    marks = _Marks()
+    segments, order = _segments(text, marks)
     kept = [k for k, (_, seg) in enumerate(segments) if seg.strip()]
     pieces = [_parse_segment(segments[k][1], marks, re.sub(r"\s+", " ", segments[k][0])) for k in kept]
+    # A list's preamble names the list, greets or sets the scene ("Big table, this one, so any order.\n• the
+    # fern\n• the kiln", "CONDITION REPORT - ROUTE OF EXAMINATION\n1. the ..."): its pieces are no goals, unless
+    # a verb sends the robot to something ("Go to the kiln first, then:\n- the fern"). Round 41.
+    pre = _preamble(text)
+    if pre.strip():
+        try:
+            n_pre = sum(1 for _, seg in _segments(pre, _Marks())[0] if seg.strip())
+        except ParseError:
+            n_pre = 0
+        keep = [i >= n_pre or (p.det and _sends(segments[k][1])) for i, (k, p) in enumerate(zip(kept, pieces))]
+        kept = [k for k, ok in zip(kept, keep) if ok]
+        pieces = [p for p, ok in zip(pieces, keep) if ok]
     # A colon between a segment and the next, whatever list mark follows it ("jobs for today:\n- the kiln").
     colon = [any(c == ":" for c, _ in segments[k + 1 : nxt + 1]) for k, nxt in zip(kept, kept[1:] + [len(segments)])]
 
