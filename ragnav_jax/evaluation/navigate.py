@@ -36,6 +36,15 @@ from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.retrieval.evaluate import parsed_order
 from ragnav_jax.world.scene import Scene
 
+LANE_STEP = 4  # the host loop's lane counts are multiples of this: runs of 1 to 4 episodes share one program
+
+
+def lanes_for(n: int) -> int:
+    """Lanes the host loop drives n episodes on (before the eval.batch_size cap): n rounded up to a multiple of
+    LANE_STEP, the extra lanes padding, so that small runs of different sizes share compiled programs (and
+    the persistent compilation cache) at the price of at most LANE_STEP - 1 idle lanes."""
+    return max(1, -(-n // LANE_STEP)) * LANE_STEP
+
 
 def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
                      spec: MethodSpec, streams: dict | None = None, executor: Executor | None = None,
@@ -106,7 +115,7 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
                                                               executor, verifier, trace)
     # 2./3. execute and reflect, a batch of episodes at a time
     t0 = time.perf_counter()
-    B = min(cfg.eval.batch_size, max(len(states), 1))
+    B = min(cfg.eval.batch_size, lanes_for(len(states)))
     bar = _progress(len(states), progress, method)
     if cfg.eval.engine == "device" and not spec.explores and not trace and not cfg.eval.record_legs:
         from ragnav_jax.evaluation.loop.program import run_device

@@ -5,7 +5,7 @@ installed all-MiniLM-L6-v2 and train only those heads and the adapters (`is_trai
 those arrays and the metadata (a few hundred kilobytes), never the encoder's own weights.
 
     trained, frozen = split_init(model, base, key, is_trained)     # flat dicts
-    trained, losses = train(loss_fn, trained, batches, steps, lr, key, desc="fit-x", progress=True)
+    trained, losses = train(loss_fn, trained, frozen, batches, steps, lr, key, desc="fit-x", progress=True)
     save_adapters(trained, meta, path); trained, meta = load_adapters(path, FORMAT, "sensor reader")
 """
 
@@ -55,23 +55,29 @@ def join(trained: dict, frozen: dict) -> dict:
 def split_init(model, base, key, is_trained: Callable[[tuple[str, ...]], bool], ids=None) -> tuple[dict, dict]:
     """(initial trained params, frozen encoder params) as flat dicts: the model's fresh heads and adapters, and
     the installed encoder's weights for everything else."""
-    init = traverse_util.flatten_dict(model.init(key, jnp.zeros((1, 8), jnp.int32) if ids is None else ids)["params"])
+    # one compiled program, not one per initialiser (the encoder's part is thrown away: the installed weights)
+    ids = jnp.zeros((1, 8), jnp.int32) if ids is None else ids
+    init = traverse_util.flatten_dict(jax.jit(model.init)(key, ids)["params"])
     pre = encoder_params(base)
     return ({k: v for k, v in init.items() if is_trained(k)}, {k: pre[k] for k in init if not is_trained(k)})
 
 
-def train(loss_fn, trained: dict, batches: Callable[[], Iterator[tuple[np.ndarray, np.ndarray]]], steps: int,
-          lr: float, key, desc: str = "fit", progress: bool = False) -> tuple[dict, list[float]]:
-    """AdamW (warm-up and cosine decay, weight decay 0.01) on loss_fn(trained, x, t, dropout key) over the
-    (x, t) batches of `batches()` (one pass an epoch, `steps` in all); returns (trained, losses)."""
+def train(loss_fn, trained: dict, frozen: dict, batches: Callable[[], Iterator[tuple[np.ndarray, np.ndarray]]],
+          steps: int, lr: float, key, desc: str = "fit", progress: bool = False) -> tuple[dict, list[float]]:
+    """AdamW (warm-up and cosine decay, weight decay 0.01) on loss_fn(trained, frozen, x, t, dropout key) over the
+    (x, t) batches of `batches()` (one pass an epoch, `steps` in all); returns (trained, losses). The frozen
+    weights are an argument of the compiled step, not constants in it, so a second fit of the same shapes finds
+    the step in the compilation cache."""
     import optax
 
-    opt = optax.adamw(optax.warmup_cosine_decay_schedule(0.0, lr, max(1, steps // 10), max(1, steps)), weight_decay=0.01)
+    schedule = optax.warmup_cosine_decay_schedule(0.0, lr, max(1, steps // 10), max(1, steps))
+    opt = optax.adamw(schedule, weight_decay=0.01)
     state = opt.init(trained)
+    frozen = jax.device_put(frozen)
 
     @jax.jit
-    def step(tr, st, x, t, k):
-        loss, g = jax.value_and_grad(loss_fn)(tr, x, t, k)
+    def step(tr, fr, st, x, t, k):
+        loss, g = jax.value_and_grad(loss_fn)(tr, fr, x, t, k)
         upd, st = opt.update(g, st, tr)
         return optax.apply_updates(tr, upd), st, loss
 
@@ -84,7 +90,7 @@ def train(loss_fn, trained: dict, batches: Callable[[], Iterator[tuple[np.ndarra
     while len(losses) < steps:
         for x, t in batches():
             key, k = jax.random.split(key)
-            trained, state, loss = step(trained, state, jnp.asarray(x), jnp.asarray(t), k)
+            trained, state, loss = step(trained, frozen, state, jnp.asarray(x), jnp.asarray(t), k)
             losses.append(float(loss))
             if bar is not None:
                 bar.update(1)

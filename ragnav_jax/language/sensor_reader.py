@@ -198,8 +198,8 @@ def fit_reader(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
     key, k0 = jax.random.split(key)
     trained, frozen = split_init(model, base, k0, _is_trained)
 
-    def loss_fn(tr, x, t, k):
-        lr_, lw = model.apply(join(tr, frozen), x, True, rngs={"dropout": k})
+    def loss_fn(tr, fr, x, t, k):
+        lr_, lw = model.apply(join(tr, fr), x, True, rngs={"dropout": k})
         has = (t[:, 1] != NONE).astype(jnp.float32)  # no reading is asked of a goal without a comparison
         ce_r = optax.softmax_cross_entropy_with_integer_labels(lr_, t[:, 0])
         ce_w = optax.softmax_cross_entropy_with_integer_labels(lw, t[:, 1])
@@ -214,7 +214,7 @@ def fit_reader(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
             yield ids[b, : _bucket(int((ids[b] > 0).sum(1).max()), LENGTHS)], y[b]
 
     steps = settings.epochs * (len(ids) // settings.batch)
-    trained, losses = train(loss_fn, trained, batches, steps, settings.lr, key, "fit-sensor-reader", progress)
+    trained, losses = train(loss_fn, trained, frozen, batches, steps, settings.lr, key, "fit-sensor-reader", progress)
     ways = np.bincount(y[:, 1], minlength=len(WAYS))
     meta = {"format": READER_FORMAT, "lora": settings.lora, "readings": list(READINGS), "ways": list(WAYS),
             "fitted_on": {"world_split": "seen", "template_sets": list(splits), "scenes": settings.scenes,

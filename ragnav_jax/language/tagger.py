@@ -352,8 +352,8 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
     key, k0 = jax.random.split(key)
     trained, frozen = split_init(model, base, k0, _is_trained, jnp.asarray(ids[:2, :32]))
 
-    def loss_fn(tr, x, t, k):  # the tags' cross-entropy plus the coordinate head's, each over its labelled tokens
-        logits = model.apply(join(tr, frozen), x, True, rngs={"dropout": k})
+    def loss_fn(tr, fr, x, t, k):  # the tags' cross-entropy plus the coordinate head's, each over its labelled tokens
+        logits = model.apply(join(tr, fr), x, True, rngs={"dropout": k})
         loss = 0.0
         for head, (a, b) in enumerate(((0, len(TAGS)), (len(TAGS), len(TAGS) + len(AXES)))):
             m = t[..., head] >= 0
@@ -369,7 +369,7 @@ def fit_tagger(cfg, settings: FitSettings = FitSettings(), splits: Sequence[str]
             yield ids[b, :L], y[b, :L]
 
     steps = settings.epochs * (len(ids) // settings.batch)
-    trained, losses = train(loss_fn, trained, batches, steps, settings.lr, key, "fit-tagger", progress)
+    trained, losses = train(loss_fn, trained, frozen, batches, steps, settings.lr, key, "fit-tagger", progress)
     meta = {"format": TAGGER_FORMAT, "lora": settings.lora, "tags": list(TAGS), "axes": list(AXES),
             "fitted_on": {"world_split": "seen", "template_sets": list(splits), "scenes": settings.scenes,
                           "seed": settings.seed, "examples": len(examples), "augmented": len(ids) - len(examples),
