@@ -4,7 +4,9 @@
         [--split paper=runs/eval-paper] --out runs/table_generalisation
 
 Each --split names a `ragnav eval` output folder (OUT/eval/<method>/{summary.json, episodes.jsonl}) with
-the same methods. For every split and method: success with a 95% Wilson interval, top-1 retrieval,
+the same methods, or a folder of kept rows (<method>/episodes.jsonl.gz, as experiments/results keeps them);
+several folders joined by commas are pooled into one split (`--split fresh=runs/AS,runs/AT`: their episodes
+together, paired within each folder). For every split and method: success with a 95% Wilson interval, top-1 retrieval,
 success on text+location+sensor episodes, wrong declarations, and the episode-paired comparison with
 RAGNav (episodes only RAGNav succeeds on / only the method does, exact sign test p). Writes
 OUT/table_generalisation.{md,csv,json}.
@@ -14,7 +16,9 @@ from __future__ import annotations
 
 import argparse
 import csv
+import gzip
 import json
+import sys
 from pathlib import Path
 
 from ragnav_jax.evaluation.metrics import paired_comparison, wilson_interval
@@ -22,16 +26,41 @@ from ragnav_jax.evaluation.metrics import paired_comparison, wilson_interval
 BASE = "ragnav"
 
 
+def _method_dirs(folder: Path) -> Path:
+    """Where a folder keeps its methods: OUT/eval of an eval run, or the folder itself (kept rows)."""
+    return folder / "eval" if (folder / "eval").is_dir() else folder
+
+
 def _rows(folder: Path, method: str) -> list[dict]:
-    path = folder / "eval" / method.replace(":", "_") / "episodes.jsonl"
-    return [json.loads(x) for x in path.read_text().splitlines() if x.strip()]
+    d = _method_dirs(folder) / method.replace(":", "_")
+    if (d / "episodes.jsonl").is_file():
+        text = (d / "episodes.jsonl").read_text()
+    else:
+        text = gzip.decompress((d / "episodes.jsonl.gz").read_bytes()).decode()
+    return [json.loads(x) for x in text.splitlines() if x.strip()]
 
 
-def split_table(folder: Path) -> dict[str, dict]:
-    """method -> figures for one eval folder."""
-    methods = sorted(p.name.replace("_", ":", 1) if p.name.startswith("ragnav_") else p.name
-                     for p in (folder / "eval").iterdir() if (p / "episodes.jsonl").is_file())
-    rows = {m: _rows(folder, m) for m in methods}
+def _methods(folder: Path) -> set[str]:
+    if not folder.is_dir():
+        return set()
+    return {p.name.replace("_", ":", 1) if p.name.startswith("ragnav_") else p.name
+            for p in _method_dirs(folder).iterdir()
+            if (p / "episodes.jsonl").is_file() or (p / "episodes.jsonl.gz").is_file()}
+
+
+def split_table(folders: Path | list[Path]) -> dict[str, dict]:
+    """method -> figures for one eval folder, or for several pooled (episode ids prefixed by the folder's
+    place, so that rows pair within a folder); methods: those every folder holds."""
+    folders = [folders] if isinstance(folders, Path) else list(folders)
+    methods = sorted(set.intersection(*(_methods(f) for f in folders)))
+    if not methods:
+        print(f"{','.join(map(str, folders))}: no method's episode rows (<method>/episodes.jsonl)", file=sys.stderr)
+        raise SystemExit(2)
+    if len(folders) == 1:
+        rows = {m: _rows(folders[0], m) for m in methods}
+    else:
+        rows = {m: [{**r, "episode": f"{i}/{r['episode']}"} for i, f in enumerate(folders) for r in _rows(f, m)]
+                for m in methods}
     out = {}
     for m, rs in rows.items():
         k, n = sum(r["success"] for r in rs), len(rs)
@@ -53,7 +82,7 @@ def main(argv=None) -> int:
     p.add_argument("--out", default="runs/table_generalisation")
     args = p.parse_args(argv)
     splits = dict(s.split("=", 1) for s in args.split)
-    res = {name: split_table(Path(folder)) for name, folder in splits.items()}
+    res = {name: split_table([Path(f) for f in folders.split(",")]) for name, folders in splits.items()}
     methods = [m for m in next(iter(res.values())) if all(m in r for r in res.values())]
     methods = sorted(methods, key=lambda m: (m != BASE, m == "oracle", m))
     header = ["method"]

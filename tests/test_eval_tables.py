@@ -76,3 +76,41 @@ def test_write_table_leaves_missing_figures_empty(tmp_path, rows):
     cells = [[c.strip() for c in line.strip("|").split("|")] for line in md.read_text().splitlines()[2:]]
     assert cells[0] == ["x", ""]
     assert read_csv(csv_path)[0] == {"a": "x", "b": ""}
+
+
+def test_generalisation_table_pools_folders_and_reads_kept_rows(tmp_path):
+    """experiments/table_generalisation.py: several folders in one split are pooled (every episode counted, each
+    paired with RAGNav's row of its own folder, though ids repeat across folders); kept rows (gzipped, no eval/
+    level) read like an eval folder's; a split with no rows is a one-line error, exit 2."""
+    import gzip
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[1] / "experiments" / "table_generalisation.py"
+    wins = {"a": [True, True, False, True], "b": [True, False, False, True]}  # RAGNav, then the baseline's below
+    other = {"a": [False, True, True, False], "b": [False, False, False, False]}
+    for f in ("a", "b"):
+        for m, ok in (("ragnav", wins[f]), ("naive_rag", other[f])):
+            rows = [dict(r, episode=f"ep-{i}", declarations=[]) for i, r in enumerate(rows_of(ok))]
+            d = tmp_path / f / m
+            d.mkdir(parents=True)
+            if f == "a":  # kept rows
+                (d / "episodes.jsonl.gz").write_bytes(gzip.compress("\n".join(map(json.dumps, rows)).encode()))
+            else:  # an eval run folder
+                d = tmp_path / f / "eval" / m
+                d.mkdir(parents=True)
+                (d / "episodes.jsonl").write_text("\n".join(map(json.dumps, rows)))
+    out = tmp_path / "t"
+    run = subprocess.run([sys.executable, str(script), "--split", f"both={tmp_path / 'a'},{tmp_path / 'b'}",
+                          "--out", str(out)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    res = json.loads((out / "table_generalisation.json").read_text())["results"]["both"]
+    assert res["ragnav"]["episodes"] == 8 and res["ragnav"]["success"] == 5 / 8
+    c = res["naive_rag"]["vs_ragnav"]
+    assert (c["episodes"], c["success_wins"], c["success_losses"]) == (8, 4, 1)  # a: 2 / 1, b: 2 / 0
+    assert c["success_p"] == pytest.approx(binomtest(4, 5).pvalue)
+    bad = subprocess.run([sys.executable, str(script), "--split", f"x={tmp_path / 'none'}", "--out", str(out)],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1 and "none" in bad.stderr
