@@ -401,6 +401,30 @@ class PlanningConfig:
 
 
 @dataclasses.dataclass(frozen=True)
+class ChangesConfig:
+    """How `ragnav changes` draws what changes in a house after exploration (world/changes.py)."""
+
+    fraction: float = 0.25  # object changes per object of the house (moves, removals, additions)
+    move: float = 0.5  # the kinds' proportions among object changes
+    remove: float = 0.25
+    add: float = 0.25
+    other_room: float = 0.5  # chance that a moved object goes to another room
+    doors: int = 1  # doors closed (each only where every room and object stays reachable)
+
+    @property
+    def weights(self) -> tuple[tuple[str, float], ...]:
+        return (("move", self.move), ("remove", self.remove), ("add", self.add))
+
+    def __post_init__(self):
+        _check(0.0 <= self.fraction <= 1.0, "changes.fraction", "must be in [0, 1]")
+        for k, w in self.weights:
+            _check(w >= 0.0, f"changes.{k}", "must be >= 0")
+        _check(self.move + self.remove + self.add > 0, "changes.move", "one of move, remove, add must be > 0")
+        _check(0.0 <= self.other_room <= 1.0, "changes.other_room", "must be in [0, 1]")
+        _check(self.doors >= 0, "changes.doors", "must be >= 0")
+
+
+@dataclasses.dataclass(frozen=True)
 class RunConfig:
     """Where run folders go."""
 
@@ -614,6 +638,7 @@ class Config:
 
     seed: int = 0
     world: WorldConfig = dataclasses.field(default_factory=WorldConfig)
+    changes: ChangesConfig = dataclasses.field(default_factory=ChangesConfig)
     run: RunConfig = dataclasses.field(default_factory=RunConfig)
     sim: SimConfig = dataclasses.field(default_factory=SimConfig)
     explore: ExploreConfig = dataclasses.field(default_factory=ExploreConfig)

@@ -135,6 +135,16 @@ def refuse_overwrite(paths, force: bool, flag: str = "--force") -> None:
         raise UserError(f"{existing[0]}: exists{more}; pass {flag} to overwrite, or choose another output")
 
 
+def scene_source(path: str | Path) -> tuple[Path, Path | None]:
+    """(scenes folder or file, run folder or None): accepts RUN, RUN/scenes or any scene folder/file."""
+    p = Path(path)
+    if p.is_dir() and (p / "scenes").is_dir():
+        return p / "scenes", p
+    if p.is_dir() and p.name == "scenes" and (p.parent / "config.yaml").exists():
+        return p, p.parent
+    return p, None
+
+
 def run_file(run_dir: str | Path, *parts: str) -> Path:
     """RUN_DIR/parts[0]/parts[1]/..., each part one safe file name and the result inside RUN_DIR (UserError
     otherwise): the path of every output whose name comes from user data (scene names, ids)."""

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ragnav_jax.errors import UserError, printable
 from ragnav_jax.io import write_json
+from ragnav_jax.runs import scene_source
 
 
 def cmd_parse(args, cfg) -> int:
@@ -66,16 +67,6 @@ def _tagged(chain, cfg):
     return dataclasses.replace(chain, subgoals=subgoals, dependencies=derive_dependencies(subgoals, chain.order))
 
 
-def _scene_source(path: str) -> tuple[Path, Path | None]:
-    """(scenes folder or file, run folder or None): accepts RUN, RUN/scenes or any scene folder/file."""
-    p = Path(path)
-    if p.is_dir() and (p / "scenes").is_dir():
-        return p / "scenes", p
-    if p.is_dir() and p.name == "scenes" and (p.parent / "config.yaml").exists():
-        return p, p.parent
-    return p, None
-
-
 def cmd_episodes(args, cfg) -> int:
     from ragnav_jax.language.agreement import parse_agreement
     from ragnav_jax.language.episodes import (
@@ -89,7 +80,7 @@ def cmd_episodes(args, cfg) -> int:
     from ragnav_jax.tables import write_table
     from ragnav_jax.world.scene import load_scene_set
 
-    src, run = _scene_source(args.scenes)
+    src, run = scene_source(args.scenes)
     scenes = load_scene_set(src)
     if args.out:
         out = Path(args.out)

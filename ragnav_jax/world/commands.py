@@ -1,4 +1,4 @@
-"""CLI subcommands of the world stage: generate, validate, show-scene."""
+"""CLI subcommands of the world stage: generate, validate, show-scene, changes."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 from ragnav_jax.cli import PositionalsAndOverrides
 from ragnav_jax.errors import UserError, printable
 from ragnav_jax.io import write_json
-from ragnav_jax.runs import default_run_dir, init_run, refuse_overwrite, run_file
+from ragnav_jax.runs import default_run_dir, init_run, refuse_overwrite, run_file, scene_source
 from ragnav_jax.tables import write_table
 
 
@@ -101,6 +101,52 @@ def cmd_validate(args, cfg) -> int:
     return 0
 
 
+def cmd_changes(args, cfg) -> int:
+    """Draws a change list per scene (RUN/changes/<scene>.changes.json), or with --apply writes the scenes after
+    the lists of a folder (default RUN/scenes-changed), every list checked against its scene."""
+    from ragnav_jax.world.changes import apply_changes, changes_path, generate_changes, load_changes, save_changes
+    from ragnav_jax.world.scene import load_scene_set, save_scene
+
+    src, run = scene_source(args.scenes)
+    scenes = load_scene_set(src)
+    if args.apply:
+        lists = Path(args.apply)
+        out = Path(args.out) if args.out else (run / "scenes-changed" if run is not None else None)
+        if out is None:
+            raise UserError("--out FOLDER is needed when --scenes is not a run folder (RUN or RUN/scenes)")
+        files = {s.name: lists / changes_path("", s.name).name for s in scenes}
+        missing = [n for n, f in files.items() if not f.is_file()]
+        if missing:
+            raise UserError(f"{files[missing[0]]}: no change list for scene '{missing[0]}'"
+                            + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
+        targets = [out / f"{s.name}.json" for s in scenes]
+        refuse_overwrite(targets, args.force)
+        if run is not None:
+            init_run(run, cfg, "changes-apply")
+        after = [apply_changes(s, load_changes(files[s.name]), str(files[s.name])) for s in scenes]  # all, then write
+        for s, t in zip(after, targets):
+            save_scene(s, t)
+        print(f"{len(scenes)} changed scene(s) written to {out}")
+        return 0
+    out = Path(args.out) if args.out else (run / "changes" if run is not None else None)
+    if out is None:
+        raise UserError("--out FOLDER is needed when --scenes is not a run folder (RUN or RUN/scenes)")
+    targets = [out / f"{s.name}.changes.json" for s in scenes]
+    refuse_overwrite([*targets, out / "changes_summary.md"], args.force)
+    if run is not None:
+        init_run(run, cfg, "changes")
+    rows = []
+    for s, t in zip(scenes, targets):
+        cl = generate_changes(s, cfg.changes, cfg.seed, cfg.world.split)
+        save_changes(cl, t)
+        rows.append({"scene": s.name, "objects": len(s.objects), **cl.counts()})
+    write_table(rows, out / "changes_summary")
+    print((out / "changes_summary.md").read_text())
+    print(f"{len(scenes)} change list(s) written to {out}; `ragnav changes --scenes {args.scenes} --apply {out}` "
+          "writes the scenes after them")
+    return 0
+
+
 def cmd_show_scene(args, cfg) -> int:
     from ragnav_jax.world.plot import save_floor_plan
     from ragnav_jax.world.scene import load_scene
@@ -128,6 +174,16 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("paths", nargs="+", metavar="PATH", action=PositionalsAndOverrides)
     p.add_argument("--strict", action="store_true", help="exit 2 on reachability warnings")
     p.set_defaults(func=cmd_validate)
+
+    p = sub.add_parser("changes", parents=[common],
+                       help="draw what changes in each scene after exploration (moved, removed, added objects, "
+                            "closed doors), or apply change lists")
+    p.add_argument("--scenes", required=True, help="scene folder or file, or a run folder from `ragnav generate`")
+    p.add_argument("--out", help="folder for the lists (default RUN/changes) or, with --apply, for the changed "
+                                 "scenes (default RUN/scenes-changed)")
+    p.add_argument("--apply", metavar="LISTS", help="folder of change lists to apply instead of drawing new ones")
+    p.add_argument("--force", action="store_true", help="overwrite existing outputs")
+    p.set_defaults(func=cmd_changes)
 
     p = sub.add_parser("show-scene", parents=[common], help="draw a scene's floor plan")
     p.add_argument("file")

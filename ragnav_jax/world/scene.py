@@ -245,21 +245,7 @@ def scene_from_dict(data: Any, source: str = "<scene>") -> Scene:
         )
         for w in data["walls"]
     )
-    objects = []
-    for o in data["objects"]:
-        pos = tuple(float(v) for v in o["position"])
-        objects.append(
-            SceneObject(
-                id=o["id"],
-                category=o["category"],
-                position=pos,
-                size=tuple(float(v) for v in o.get("size", DEFAULT_OBJECT_SIZE)),
-                room=o.get("room", ""),
-                attributes=tuple((str(k), str(v)) for k, v in o.get("attributes", {}).items()),
-                description=o.get("description", ""),
-                sensors=_sensors(o.get("sensors", {}), source, len(objects)),
-            )
-        )
+    objects = [object_from_dict(o, source, i) for i, o in enumerate(data["objects"])]
     start = Start(tuple(float(v) for v in data["start"]["position"]), float(data["start"].get("yaw", 0.0)))
     scene = Scene(data["name"], rooms, walls, tuple(objects), start)
     _semantic_check(scene, source)
@@ -269,6 +255,20 @@ def scene_from_dict(data: Any, source: str = "<scene>") -> Scene:
         for o in scene.objects
     )
     return dataclasses.replace(scene, objects=objs)
+
+
+def object_from_dict(o: dict, source: str = "<scene>", i: int = 0) -> SceneObject:
+    """One object as the scene format writes it (already schema-checked; `i`: its place, for error paths)."""
+    return SceneObject(
+        id=o["id"],
+        category=o["category"],
+        position=tuple(float(v) for v in o["position"]),
+        size=tuple(float(v) for v in o.get("size", DEFAULT_OBJECT_SIZE)),
+        room=o.get("room", ""),
+        attributes=tuple((str(k), str(v)) for k, v in o.get("attributes", {}).items()),
+        description=o.get("description", ""),
+        sensors=_sensors(o.get("sensors", {}), source, i),
+    )
 
 
 def _sensors(raw: dict, source: str, i: int) -> tuple[tuple[str, float], ...]:
@@ -293,23 +293,6 @@ def _num(v: float) -> float | int:
 
 def scene_to_dict(scene: Scene) -> dict:
     """Plain data in the `ragnav-scene/1` format (numbers rounded to 0.1 mm for stable files)."""
-    objects = []
-    for o in scene.objects:
-        d: dict[str, Any] = {
-            "id": o.id,
-            "category": o.category,
-            "position": [_num(v) for v in o.position],
-            "size": [_num(v) for v in o.size],
-        }
-        if o.room:
-            d["room"] = o.room
-        if o.attributes:
-            d["attributes"] = dict(o.attributes)
-        if o.description:
-            d["description"] = o.description
-        if o.sensors:
-            d["sensors"] = {k: _num(v) for k, v in o.sensors}
-        objects.append(d)
     return {
         "format": FORMAT,
         "name": scene.name,
@@ -326,9 +309,28 @@ def scene_to_dict(scene: Scene) -> dict:
             }
             for w in scene.walls
         ],
-        "objects": objects,
+        "objects": [object_to_dict(o) for o in scene.objects],
         "start": {"position": [_num(v) for v in scene.start.position], "yaw": _num(scene.start.yaw)},
     }
+
+
+def object_to_dict(o: SceneObject) -> dict:
+    """One object in the `ragnav-scene/1` format."""
+    d: dict[str, Any] = {
+        "id": o.id,
+        "category": o.category,
+        "position": [_num(v) for v in o.position],
+        "size": [_num(v) for v in o.size],
+    }
+    if o.room:
+        d["room"] = o.room
+    if o.attributes:
+        d["attributes"] = dict(o.attributes)
+    if o.description:
+        d["description"] = o.description
+    if o.sensors:
+        d["sensors"] = {k: _num(v) for k, v in o.sensors}
+    return d
 
 
 def scene_to_json(scene: Scene) -> str:
