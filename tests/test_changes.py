@@ -111,6 +111,7 @@ def test_cli_draws_applies_and_refuses_bad_or_existing_outputs(apartment, tmp_pa
     assert main(["changes", "--scenes", str(run), "--quiet", "changes.fraction=0.2"]) == 0
     lst = run / "changes" / f"{apartment.name}.changes.json"
     assert load_changes(lst).scene == apartment.name
+    assert (run / "changes" / "plots" / f"{apartment.name}.png").stat().st_size > 10_000  # the changes drawn
     assert main(["changes", "--scenes", str(run), "--quiet"]) == 2  # the lists exist: no --force
     assert main(["changes", "--scenes", str(run), "--apply", str(run / "changes"), "--quiet"]) == 0
     after, = load_scene_set(run / "scenes-changed")

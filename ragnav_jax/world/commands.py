@@ -105,6 +105,7 @@ def cmd_changes(args, cfg) -> int:
     """Draws a change list per scene (RUN/changes/<scene>.changes.json), or with --apply writes the scenes after
     the lists of a folder (default RUN/scenes-changed), every list checked against its scene."""
     from ragnav_jax.world.changes import apply_changes, changes_path, generate_changes, load_changes, save_changes
+    from ragnav_jax.world.plot import save_changes_plan
     from ragnav_jax.world.scene import load_scene_set, save_scene
 
     src, run = scene_source(args.scenes)
@@ -139,11 +140,13 @@ def cmd_changes(args, cfg) -> int:
     for s, t in zip(scenes, targets):
         cl = generate_changes(s, cfg.changes, cfg.seed, cfg.world.split)
         save_changes(cl, t)
+        if args.plots:
+            save_changes_plan(s, apply_changes(s, cl), cl, out / "plots" / f"{s.name}.png")
         rows.append({"scene": s.name, "objects": len(s.objects), **cl.counts()})
     write_table(rows, out / "changes_summary")
     print((out / "changes_summary.md").read_text())
-    print(f"{len(scenes)} change list(s) written to {out}; `ragnav changes --scenes {args.scenes} --apply {out}` "
-          "writes the scenes after them")
+    print(f"{len(scenes)} change list(s) written to {out}" + (f", pictures in {out / 'plots'}" if args.plots else "")
+          + f"; `ragnav changes --scenes {args.scenes} --apply {out}` writes the scenes after them")
     return 0
 
 
@@ -183,6 +186,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
                                  "scenes (default RUN/scenes-changed)")
     p.add_argument("--apply", metavar="LISTS", help="folder of change lists to apply instead of drawing new ones")
     p.add_argument("--force", action="store_true", help="overwrite existing outputs")
+    p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the pictures of the changes")
     p.set_defaults(func=cmd_changes)
 
     p = sub.add_parser("show-scene", parents=[common], help="draw a scene's floor plan")

@@ -1,4 +1,4 @@
-"""Floor-plan pictures: rooms, walls, objects with labels, start pose."""
+"""Floor-plan pictures: rooms, walls, objects with labels, start pose; a change list drawn over the house."""
 
 from __future__ import annotations
 
@@ -62,6 +62,34 @@ def save_floor_plan(scene: Scene, out: str | Path, dpi: int = 150) -> Path:
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     ax = draw_floor_plan(scene)
+    ax.figure.tight_layout()
+    save_figure(ax.figure, out, dpi=dpi)
+    plt.close(ax.figure)
+    return out
+
+
+def save_changes_plan(before: Scene, after: Scene, changes, out: str | Path, dpi: int = 150) -> Path:
+    """The house after a change list (world/changes.py), the changes marked: a move as an arrow from where the
+    object stood, a removal as a cross where it stood, an addition ringed, a closed door as a red wall."""
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    ax = draw_floor_plan(after, labels=True)
+    for c in changes.changes:
+        if c.kind == "move":
+            o = before.object_by_id(c.object)
+            ax.annotate("", xy=c.to[:2], xytext=o.position[:2],
+                        arrowprops=dict(arrowstyle="->", color="#2a9d8f", lw=1.6, alpha=0.9))
+        elif c.kind == "remove":
+            o = before.object_by_id(c.object)
+            ax.plot(*o.position[:2], marker="x", color="#e63946", ms=9, mew=2)
+            ax.text(o.position[0], o.position[1] - 0.25, o.category, fontsize=5, color="#e63946", ha="center", va="top")
+        elif c.kind == "add":
+            ax.plot(*c.added.position[:2], marker="o", mfc="none", mec="#2a9d8f", ms=14, mew=1.8)
+        else:
+            ax.plot([c.wall.a[0], c.wall.b[0]], [c.wall.a[1], c.wall.b[1]], color="#e63946", lw=4, solid_capstyle="butt")
+    n = changes.counts()
+    ax.set_title(f"{after.name} after its changes: {n['move']} moved (arrows), {n['remove']} removed (crosses), "
+                 f"{n['add']} added (rings), {n['close_door']} door(s) closed (red)", fontsize=8)
     ax.figure.tight_layout()
     save_figure(ax.figure, out, dpi=dpi)
     plt.close(ax.figure)
