@@ -7,7 +7,9 @@ scene files; scenes without memory are explored and their memory built in RUN fi
 name, a comma-separated list, or `all`. Writes RUN/eval/<method>/{episodes.jsonl, summary.json}, the
 tables (`write_eval_tables`: table, table_by_modality, table_full; .md and .csv), the bar chart
 RUN/eval/methods.png and, with eval.record_legs=true, the first method's route of one episode
-RUN/eval/route.png; prints the main table and the paths.
+RUN/eval/route.png; prints the main table and the paths. With --changes FOLDER (`ragnav changes`), the memory
+is the explored scenes' and the tasks run in the world after the change lists (evaluation/worlds.py); rows say
+which goals' objects changed, and the tables split static from changed episodes (table_by_change).
 """
 
 from __future__ import annotations
@@ -25,8 +27,9 @@ TABLE_KEYS = ("episodes", "success_rate", "retrieval_accuracy", "spl", "progress
               "wrong_declarations", "fallback_declarations", "fallback_correct")
 # The main table's markdown: header and number format of each CSV column (success carries its interval).
 HEADERS = {"success": "success [95% CI]", "spl": "SPL", "top1": "top-1 retrieval", "travel_m": "travel (m)",
-           "time_s": "time / episode (s)"}
-FORMATS = {"success": "{:.3f}", "spl": "{:.3f}", "top1": "{:.3f}", "travel_m": "{:.1f}", "time_s": "{:.1f}"}
+           "time_s": "time / episode (s)", "static": "success, static", "changed": "success, changed"}
+FORMATS = {"success": "{:.3f}", "spl": "{:.3f}", "top1": "{:.3f}", "travel_m": "{:.1f}", "time_s": "{:.1f}",
+           "static": "{:.3f}", "changed": "{:.3f}"}
 
 
 def prepare_inputs(scenes_arg: str, memory_arg: str | None, out: Path, cfg, quiet: bool):
@@ -97,6 +100,12 @@ def cmd_eval(args, cfg) -> int:
     # format errors (file:line, exit 2) and unreadable instructions before any exploring
     unparsed = check_unparsed(select(load_episodes(args.episodes)), args.allow_unparsed, args.episodes, cfg.eval.tagger)
     scenes, bank, streams = prepare_inputs(args.scenes, args.memory, out, cfg, args.quiet)
+    explored = scenes
+    if args.changes:  # the memory is the explored scenes', the tasks run in the world after the change lists
+        from ragnav_jax.evaluation.worlds import load_worlds, world_stream
+
+        worlds = load_worlds(scenes, args.changes, sorted({e.scene for e in select(load_episodes(args.episodes))}))
+        scenes = [worlds.get(s.name, s) for s in scenes]
     episodes = select(load_episodes(args.episodes, scenes))
     if not episodes:
         raise UserError(f"{args.episodes}: no episodes")
@@ -104,14 +113,18 @@ def cmd_eval(args, cfg) -> int:
     embedder = bank_embedder(bank, cfg)
     used = [s for s in scenes if s.name in {e.scene for e in episodes}]
     executor = make_executor(used, cfg)
+    if args.changes and "etpnav" in methods:  # it replays the exploration's route: what it sees there is the world's
+        world = {s.name: s for s in used if s.name in worlds}
+        streams = {k: world_stream(v, world[k], executor, cfg.sim) if k in world else v for k, v in streams.items()}
     verifier = Verifier.build(embedder, cfg)  # shared: its encoder cache, memory views and checks serve every method
     summaries, first = {}, None
     for m in methods:
         rows, summary = evaluate_navigation(bank, scenes, episodes, embedder, cfg, m, streams=streams,
-                                            progress=not args.quiet, executor=executor, verifier=verifier)
+                                            progress=not args.quiet, executor=executor, verifier=verifier,
+                                            memory_scenes=explored if args.changes else None)
         summary.update({"scenes": str(Path(args.scenes).resolve()), "episodes_file": str(Path(args.episodes).resolve()),
                         "memory": args.memory and str(Path(args.memory).resolve()),  # what show-episode replays
-                        "unparsed": unparsed})
+                        "changes": args.changes and str(Path(args.changes).resolve()), "unparsed": unparsed})
         d = out / "eval" / m.replace(":", "_")
         write_jsonl(d / "episodes.jsonl", rows)
         write_json(d / "summary.json", summary)
@@ -138,6 +151,8 @@ def figures(blk: dict) -> dict:
     lo, hi = blk.get("success_ci95") or (None, None)
     out = {"episodes": blk.get("episodes"), "success": blk.get("success_rate"), "ci_low": lo, "ci_high": hi,
            "spl": blk.get("spl"), "top1": blk.get("retrieval_accuracy"), "travel_m": blk.get("travel_distance_m")}
+    if "by_change" in blk:  # a changed world (--changes): success on episodes with and without a changed goal
+        out |= {k: blk["by_change"][k]["success_rate"] for k in ("static", "changed")}
     return out | ({"time_s": blk["total_time_s"]} if "total_time_s" in blk else {})
 
 
@@ -158,8 +173,10 @@ def readable(row: dict) -> dict:
 def write_eval_tables(summaries: dict[str, dict], folder: Path) -> list[Path]:
     """Writes the tables of `summaries` (method -> summary) in `folder`, as .csv and .md; returns the .md paths:
     table (one row per method: success with its Wilson 95% interval, SPL, top-1 retrieval, travel, time per
-    episode = task time + simulated time), table_by_modality (the same per instruction modality, no time)
-    and table_full (every figure, one row per method and per method and modality)."""
+    episode = task time + simulated time; in a changed world also success on static and changed episodes),
+    table_by_modality (the same per instruction modality, no time), table_full (every figure, one row per
+    method and per method and modality) and, in a changed world, table_by_change (per method, the static and
+    the changed episodes)."""
     from ragnav_jax.tables import write_table
 
     main = [{"method": m, **figures(s)} for m, s in summaries.items()]
@@ -168,9 +185,14 @@ def write_eval_tables(summaries: dict[str, dict], folder: Path) -> list[Path]:
     for m, s in summaries.items():
         full.append({"method": m, **{k: s.get(k) for k in TABLE_KEYS}})
         full += [{"method": f"{m} [{mod}]", **{k: b.get(k) for k in TABLE_KEYS}} for mod, b in s["by_modality"].items()]
-    return [write_table(main, folder / "table", [readable(r) for r in main])[1],
-            write_table(by_mod, folder / "table_by_modality", [readable(r) for r in by_mod])[1],
-            write_table(full, folder / "table_full")[1]]
+    out = [write_table(main, folder / "table", [readable(r) for r in main])[1],
+           write_table(by_mod, folder / "table_by_modality", [readable(r) for r in by_mod])[1],
+           write_table(full, folder / "table_full")[1]]
+    by_change = [{"method": m, "episodes_of": k, **figures(b)} for m, s in summaries.items()
+                 for k, b in s.get("by_change", {}).items()]
+    if by_change:
+        out.append(write_table(by_change, folder / "table_by_change", [readable(r) for r in by_change])[1])
+    return out
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
@@ -182,6 +204,9 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--episodes", required=True, help="episodes .jsonl file")
     p.add_argument("--method", help="method, comma-separated methods, or 'all' (default: eval.method)")
     p.add_argument("--memory", help="memory bank folder to reuse (default: SCENES/memory/bank, else built in --out)")
+    p.add_argument("--changes", metavar="FOLDER",
+                   help="change lists (`ragnav changes`, <scene>.changes.json): the memory is the explored scenes', "
+                        "the tasks run in the scenes after the changes; tables split static and changed episodes")
     p.add_argument("--out", required=True, help="output run folder")
     p.add_argument("--limit", type=nonneg_int, default=0, help="first N episodes only (0: all)")
     p.add_argument("--stride", type=positive_int, default=1, help="every N-th episode only (an even subsample)")

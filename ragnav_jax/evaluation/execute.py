@@ -111,7 +111,7 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
     mask = np.zeros((len(scenes), O), bool)
     for s, sc in enumerate(scenes):
         for j, o in enumerate(sc.objects):
-            pos[s, j], size[s, j], mask[s, j] = o.position, o.size, True
+            pos[s, j], size[s, j], mask[s, j] = o.position, o.size, o.id not in sc.absent
     tables = SceneTables(geo, jnp.asarray(pos), jnp.asarray(size), jnp.asarray(mask))
     obj_geom = jnp.arange(model.layout.obj_geom0, model.layout.obj_geom0 + O, dtype=jnp.int32)
     rb = model.layout.robot_body

@@ -181,6 +181,9 @@ def summarise(rows: list[dict], timing: dict, task_time_s: float, method: str) -
     for r in rows:
         by[r["modality"]].append(r)
     out["by_modality"] = {m: _block(v) for m, v in sorted(by.items())}
+    if any("changed" in r for r in rows):  # a world that changed after exploration (evaluation/worlds.py)
+        out["by_change"] = {k: _block([r for r in rows if r.get("changed") == (k == "changed")])
+                            for k in ("static", "changed")}
     out["reasons"] = dict(Counter(r["reason"] for r in rows))
     return out
 

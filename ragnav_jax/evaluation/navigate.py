@@ -48,10 +48,14 @@ def lanes_for(n: int) -> int:
 
 def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
                      spec: MethodSpec, streams: dict | None = None, executor: Executor | None = None,
-                     verifier: Verifier | None = None, trace: Collection[str] = ()):
+                     verifier: Verifier | None = None, trace: Collection[str] = (),
+                     memory_scenes: Sequence[Scene] | None = None):
     """Everything before the first leg, for either engine: (loop, states, candidates, the Oracle's candidates,
     task time per episode). Parses, grounds and retrieves for every episode, computes the verdict and search
-    tables and each episode's first plan."""
+    tables and each episode's first plan. memory_scenes: the scenes as the memory was built from them, where
+    `scenes` changed since (`world.changes.world_after`: same object indices); retrieval, grounding and what
+    the memory knows of rooms read them, the world (driving, seeing, the check's perception, the Oracle)
+    reads `scenes`."""
     names = list(bank.names)
     unknown = sorted({ep.scene for ep in episodes} - set(names))
     if unknown:
@@ -62,11 +66,13 @@ def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequen
     # 1. instruction -> plan, for all episodes (host wall clock: parsing, embedding, retrieval, order)
     t0 = time.perf_counter()
     verifier = verifier or Verifier.build(embedder, cfg)
-    cands = retrieve_candidates(spec, bank, scenes, episodes, embedder, cfg, verifier)
+    memory_scenes = memory_scenes or scenes
+    cands = retrieve_candidates(spec, bank, scenes if spec.retrieval == "truth" else memory_scenes, episodes, embedder,
+                                cfg, verifier, memory_scenes=memory_scenes)
     oracle = cands if spec.retrieval == "truth" else retrieve_candidates(method_spec("oracle"), bank, scenes, episodes,
-                                                                          embedder, cfg)
+                                                                          embedder, cfg, memory_scenes=memory_scenes)
     t1 = time.perf_counter()
-    views = memory_views(verifier, bank, scenes) if spec.reads else {}
+    views = memory_views(verifier, bank, scenes, memory_scenes) if spec.reads else {}
     if spec.reads:  # the reflection's check, one verdict per (episode, goal, object)
         loop.verdicts = verdict_table(verifier, views, episodes, cands.subgoals)
         if cfg.eval.fallback:
@@ -100,19 +106,20 @@ def prepare_episodes(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequen
 def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode], embedder, cfg: Config,
                         method: str | None = None, streams: dict | None = None, progress: bool = False,
                         executor: Executor | None = None, verifier: Verifier | None = None,
-                        trace: Collection[str] = ()) -> tuple[list[dict], dict]:
+                        trace: Collection[str] = (), memory_scenes: Sequence[Scene] | None = None
+                        ) -> tuple[list[dict], dict]:
     """Runs one method over every episode; returns per-episode rows and the summary. Methods evaluated on
     the same episodes can share one `verifier` (and its encoder cache). The rows of the episode ids in
     `trace` also hold "legs" with per-step poses and a "trace" (candidates, rejections: `trace_of`).
     `eval.engine` picks the loop: "host" (`host_loop._run_chunk`, one batched MJX call per leg) or "device"
     (`evaluation/loop/program.py`, the whole loop one jitted program; etpnav, traces and record_legs run on
-    the host)."""
+    the host). memory_scenes: as in `prepare_episodes` (a world that changed after exploration)."""
     from ragnav_jax.evaluation.metrics import episode_row, oracle_lengths, summarise
 
     method = method or cfg.eval.method
     spec = method_spec(method)
     loop, states, cands, oracle, task_time = prepare_episodes(bank, scenes, episodes, embedder, cfg, spec, streams,
-                                                              executor, verifier, trace)
+                                                              executor, verifier, trace, memory_scenes)
     # 2./3. execute and reflect, a batch of episodes at a time
     t0 = time.perf_counter()
     B = min(cfg.eval.batch_size, lanes_for(len(states)))
@@ -130,6 +137,13 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     cands.timing["loop_s"] = time.perf_counter() - t0
     lengths = oracle_lengths(loop, states, [oracle.nodes[st.e] for st in states])
     rows = [episode_row(st, loop, Ls, cands, cfg, method) for st, Ls in zip(states, lengths)]
+    if memory_scenes is not None:  # a world that changed after exploration: which goals' objects changed
+        from ragnav_jax.evaluation.worlds import goal_changes
+
+        before = {s.name: s for s in memory_scenes}
+        for r, st in zip(rows, states):
+            r["changed_goals"] = goal_changes(st.ep.goals, loop.scenes[st.ep.scene], before[st.ep.scene])
+            r["changed"] = any(r["changed_goals"])
     for r, st in zip(rows, states):
         if st.trace is not None:
             r["trace"] = st.trace

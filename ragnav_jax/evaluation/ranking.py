@@ -259,15 +259,26 @@ def _text_ranked(spec: MethodSpec, bank: MemoryBank, scenes, items, embedder, cf
     return out
 
 
-def _truth_ranked(bank: MemoryBank, scenes, items) -> _Ranked:
-    """The Oracle: each true goal's node."""
+def _truth_ranked(bank: MemoryBank, scenes, items, memory_scenes=None) -> _Ranked:
+    """The Oracle: each true goal's node: the key pose that observed it from closest, or, for an object that moved
+    or appeared since the memory was built (`scenes` against `memory_scenes`), the live key pose nearest where
+    it stands now."""
     out, names = _Ranked(), list(bank.names)
     by_name = {s.name: s for s in scenes}
+    before = {s.name: s for s in memory_scenes or scenes}
     for ep, kk, goal, _sg in items:
         if goal is None:
             continue
-        gidx = next((j for j, o in enumerate(by_name[ep.scene].objects) if o.id == goal), -1)
-        node = _oracle_node(bank, names.index(ep.scene), gidx)
+        objs, old = by_name[ep.scene].objects, before[ep.scene].objects
+        gidx = next((j for j, o in enumerate(objs) if o.id == goal), -1)
+        b = names.index(ep.scene)
+        if gidx >= len(old) or (gidx >= 0 and old[gidx].position != objs[gidx].position):
+            pos = np.asarray(bank.memory.position[b])[:, :2]
+            d = np.where(np.asarray(bank.memory.node_mask[b]), np.linalg.norm(pos - objs[gidx].position[:2], axis=1),
+                         np.inf)
+            node = int(np.argmin(d))
+        else:
+            node = _oracle_node(bank, b, gidx)
         out.nodes[(ep.id, kk)] = [node] if node >= 0 else []
     return out
 
@@ -292,9 +303,11 @@ def grounder(spec: MethodSpec, bank: MemoryBank, scenes, episodes, cfg: Config, 
 
 
 def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Scene], episodes: Sequence[Episode],
-                        embedder, cfg: Config, verifier: Verifier | None = None) -> Candidates:
+                        embedder, cfg: Config, verifier: Verifier | None = None,
+                        memory_scenes: Sequence[Scene] | None = None) -> Candidates:
     """Top-k candidate nodes per subgoal for a method (spec.retrieval); timings of the retrieval kernels.
-    RAGNav's pre-check (`eval.precheck`) needs the verifier."""
+    RAGNav's pre-check (`eval.precheck`) needs the verifier. The Oracle reads the world (`scenes`), where it
+    changed since the memory was built (`memory_scenes`)."""
     ground = grounder(spec, bank, scenes, episodes, cfg, verifier)
     items = goal_items(episodes, ground, every_subgoal=True)
     subgoals: dict[str, object] = {}
@@ -304,7 +317,7 @@ def retrieve_candidates(spec: MethodSpec, bank: MemoryBank, scenes: Sequence[Sce
             subgoals[ep.id] = (subgoals[ep.id] or ()) + (sg,)
     r = {"kernel": lambda: _kernel_ranked(spec, bank, scenes, episodes, embedder, cfg, verifier, ground),
          "text": lambda: _text_ranked(spec, bank, scenes, items, embedder, cfg),
-         "truth": lambda: _truth_ranked(bank, scenes, items),
+         "truth": lambda: _truth_ranked(bank, scenes, items, memory_scenes),
          "none": _Ranked}[spec.retrieval]()
     per_ep: dict[str, list] = defaultdict(list)
     est_ep: dict[str, list] = defaultdict(list)

@@ -267,17 +267,20 @@ class Verifier:
         return out | {r for r, x in sc.items() if (among is None or r in among) and x >= max(top - self.p.room_margin, gate)}
 
     # -- the verdict table
-    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]]) -> SceneView:
-        """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type."""
+    def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]],
+                   memory_scene: Scene | None = None) -> SceneView:
+        """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type
+        (the rooms of `memory_scene`, the scene as the memory saw it, where the world changed since)."""
+        room = [o.room for o in (memory_scene or scene).objects]
         vocab = vocabulary(recorded_names)
         classes, frequent = name_classes(recorded_names)
         aliases = alias_sets(recorded_names, classes, frequent)
         by_room: dict[str, list[str]] = {r.id: [] for r in scene.rooms}
         for oi, ns in recorded_names.items():
             for n in ns:
-                if n.lower() not in by_room[scene.objects[oi].room]:
-                    by_room[scene.objects[oi].room].append(n.lower())
-        counts = {r: Counter(canonical(n) for o, ns in recorded_names.items() if scene.objects[o].room == r for n in ns)
+                if n.lower() not in by_room[room[oi]]:
+                    by_room[room[oi]].append(n.lower())
+        counts = {r: Counter(canonical(n) for o, ns in recorded_names.items() if room[o] == r for n in ns)
                   for r in by_room}
         types = {r: _summariser().infer_type(counts[r], 2)[0] for r, ns in by_room.items() if ns}
         return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), {r: tuple(ns) for r, ns in by_room.items()},
@@ -489,14 +492,18 @@ def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
     return names, name_of
 
 
-def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str, SceneView]:
+def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene], memory_scenes: Sequence[Scene] | None = None
+                 ) -> dict[str, SceneView]:
     """Scene name -> what its memory holds (`Verifier.scene_view`), for the bank's scenes among `scenes`; kept on
-    the verifier for the same bank and scene objects."""
-    key = (id(bank), *map(id, scenes))
+    the verifier for the same bank and scene objects. memory_scenes: the scenes as the memory saw them, where the
+    world (`scenes`, same object indices) changed since: the rooms it recorded objects in are theirs."""
+    memory_scenes = memory_scenes or scenes
+    key = (id(bank), *map(id, scenes), *map(id, memory_scenes))
     hit = verifier._views.get(key)
-    if hit is not None and hit[0] is bank and all(a is b for a, b in zip(hit[1], scenes)):
+    if hit is not None and hit[0] is bank and all(a is b for a, b in zip(hit[1], (*scenes, *memory_scenes))):
         return hit[2]
     by_name = {s.name: s for s in scenes}
+    before = {s.name: s for s in memory_scenes}
     obs = np.asarray(bank.memory.obs_object)
     mask = np.asarray(bank.memory.node_mask)
     views = {}
@@ -504,8 +511,9 @@ def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene]) -> dict[str,
         if meta.scene in by_name:
             scene = by_name[meta.scene]
             known = sorted({int(x) for x in obs[b][mask[b]].ravel() if x >= 0})
-            views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, scene)[0])
-    verifier._views[key] = (bank, tuple(scenes), views)
+            old = before.get(meta.scene, scene)
+            views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, old)[0], old)
+    verifier._views[key] = (bank, (*scenes, *memory_scenes), views)
     return views
 
 
@@ -524,7 +532,11 @@ def verdict_table(verifier: Verifier, views: dict[str, SceneView], episodes, sub
             hit = verifier._checks.get(key)
             if hit is None or hit[0] is not view:
                 ps = verifier.perceptions_of(view.scene, ep.id) if ps is None else ps
-                hit = verifier._checks[key] = (view, check(view, sg, ps))
+                v = check(view, sg, ps)
+                if view.scene.absent:  # objects that left the world pass nothing
+                    gone = np.array([o.id in view.scene.absent for o in view.scene.objects])
+                    v = np.where(gone, np.inf if graded else False, v).astype(v.dtype)
+                hit = verifier._checks[key] = (view, v)
             row.append(hit[1])
         out.append(row)
     return out

@@ -206,10 +206,12 @@ def load_episodes(path: str | Path, scenes: Sequence[Scene] | None = None) -> li
         if by_name is not None:
             if ep.scene not in by_name:
                 raise EpisodeError(f"{path}: line {n}: unknown scene '{ep.scene}' (scenes: {', '.join(sorted(by_name))})")
-            known = {o.id for o in by_name[ep.scene].objects}
+            sc = by_name[ep.scene]
+            known = {o.id for o in sc.objects}
             for g in ep.goals:
-                if g not in known:
-                    raise EpisodeError(f"{path}: line {n}: goal object '{g}' is not in scene '{ep.scene}'")
+                if g not in known or g in sc.absent:
+                    gone = " (its change list removes it)" if g in sc.absent else ""
+                    raise EpisodeError(f"{path}: line {n}: goal object '{g}' is not in scene '{ep.scene}'{gone}")
         out.append(ep)
     if not out:
         raise EpisodeError(f"{path}: no episodes in file")

@@ -116,7 +116,7 @@ def slot_geometry(scene: Scene | None, layout: Layout) -> dict[str, np.ndarray]:
         pos[g], size[g], quat[g] = wall_box(walls[i].a, walls[i].b, walls[i].thickness, walls[i].height) if i < len(walls) else _parked(g)
     for i in range(layout.objects):
         g = layout.obj_geom0 + i
-        if i < len(objects):
+        if i < len(objects) and objects[i].id not in scene.absent:
             pos[g], size[g] = np.array(objects[i].position), np.array(objects[i].size) / 2
         else:
             pos[g], size[g], quat[g] = _parked(g)

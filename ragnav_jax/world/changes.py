@@ -221,6 +221,18 @@ def apply_changes(scene: Scene, cl: ChangeList, source: str = "<changes>") -> Sc
     return scene_from_dict(scene_to_dict(after), source=f"{source} (scene '{scene.name}' after the changes)")
 
 
+def world_after(scene: Scene, cl: ChangeList, source: str = "<changes>") -> Scene:
+    """The world a task runs in after `cl`, indexed like the memory built before it: the explored scene's objects
+    in their order (moved ones where they stand now, removed ones kept in the list but `absent`), then the added
+    ones. A memory's object indices (`obs_object`) are therefore valid in it; checked like `apply_changes`."""
+    after = apply_changes(scene, cl, source)
+    now = {o.id: o for o in after.objects}
+    before = [o.id for o in scene.objects]
+    objects = [now.get(i, o) for i, o in zip(before, scene.objects)] + [o for o in after.objects if o.id not in set(before)]
+    return dataclasses.replace(after, objects=tuple(objects), absent=frozenset(i for i in before if i not in now))
+
+
+
 # ----------------------------------------------------------------------------------------------------
 # Drawing a list for a generated house
 

@@ -93,6 +93,9 @@ class Scene:
     walls: tuple[Wall, ...]
     objects: tuple[SceneObject, ...]
     start: Start
+    # ids of objects listed only so that a memory built before a change keeps its indices: they left the
+    # world (`world.changes.world_after`), so nothing collides with, sees or declares them; never in a file
+    absent: frozenset[str] = frozenset()
 
     def room_by_id(self, room_id: str) -> Room:
         return next(r for r in self.rooms if r.id == room_id)

@@ -1,0 +1,141 @@
+"""Tasks in worlds that changed after exploration (evaluation/worlds.py, `ragnav eval --changes`): the world keeps
+the memory's object indices, what left it is neither seen, touched nor passed by the check, the Oracle goes
+where a goal stands now, rows and tables split static from changed episodes, and bad inputs exit 2."""
+
+import json
+import shutil
+
+import numpy as np
+import pytest
+import sweep_fixtures
+
+from ragnav_jax.cli import main
+from ragnav_jax.config import ChangesConfig
+from ragnav_jax.evaluation.execute import make_executor
+from ragnav_jax.evaluation.navigate import evaluate_navigation
+from ragnav_jax.evaluation.worlds import goal_changes, load_worlds, world_stream
+from ragnav_jax.language.episodes import Episode, EpisodeError, load_episodes, save_episodes
+from ragnav_jax.world.changes import Change, ChangeList, apply_changes, generate_changes, world_after
+from ragnav_jax.world.scene import load_scene_set
+
+tiny_run = sweep_fixtures.tiny_run
+
+
+def test_the_world_keeps_the_memorys_indices(apartment):
+    cl = generate_changes(apartment, ChangesConfig(fraction=0.4, doors=1), seed=1)
+    w = world_after(apartment, cl)
+    after = apply_changes(apartment, cl)
+    n = len(apartment.objects)
+    assert [o.id for o in w.objects[:n]] == [o.id for o in apartment.objects]  # obs_object stays valid
+    removed = {c.object for c in cl.changes if c.kind == "remove"}
+    added = [c.added.id for c in cl.changes if c.kind == "add"]
+    assert removed and added and w.absent == removed
+    assert [o.id for o in w.objects[n:]] == added
+    present = {o.id: o for o in w.objects if o.id not in w.absent}
+    assert present == {o.id: o for o in after.objects} and w.walls == after.walls
+    moved = [c.object for c in cl.changes if c.kind == "move"]
+    still = next(o.id for o in apartment.objects if o.id not in {c.object for c in cl.changes})
+    assert goal_changes([*moved, *added, still], w, apartment) == ["move"] * len(moved) + ["add"] * len(added) + [""]
+
+
+def _moved_to(scene, oid, xyz, room):
+    return ChangeList(scene.name, (Change("move", oid, to=xyz, origin=scene.object_by_id(oid).position, room=room),
+                                   Change("remove", "radiator_1")))
+
+
+@pytest.fixture(scope="module")
+def moved(tiny_run, apartment):
+    """The tiny run's memory; a world where the fridge went from the kitchen to the bedroom and the radiator left."""
+    _, _, cfg, bank, emb = tiny_run
+    w = world_after(apartment, _moved_to(apartment, "fridge_1", (1.0, 6.0, 0.9), "bedroom"))
+    return cfg, bank, emb, w
+
+
+def test_what_left_the_world_is_not_seen_nor_in_the_way(moved, apartment):
+    cfg, _, _, w = moved
+    ex = make_executor([w], cfg)
+    k = [o.id for o in w.objects].index("radiator_1")
+    assert not bool(ex.tables.obj_mask[0, k])
+    rad = apartment.object_by_id("radiator_1").position
+    d = ex.init(np.zeros(1, np.int32), np.array([[rad[0], rad[1] + 0.9, -np.pi / 2]], np.float32))
+    visible, _ = ex.look(np.zeros(1, np.int32), d)
+    fridge = [o.id for o in w.objects].index("fridge_1")
+    assert not bool(visible[0, k])
+    # the robot drives through where the radiator stood
+    pts = np.zeros((1, ex.path_points, 2), np.float32)
+    pts[0, :2] = [[rad[0], rad[1] + 0.9], [rad[0], rad[1] - 0.6]]
+    res = ex.run(np.zeros(1, np.int32), d, pts, np.array([2]), np.array([200]))
+    assert bool(res.arrived[0])
+    # the fridge is seen where it stands now, from the bedroom
+    d = ex.init(np.zeros(1, np.int32), np.array([[2.5, 6.5, np.pi]], np.float32))
+    assert bool(ex.look(np.zeros(1, np.int32), d)[0][0, fridge])
+
+
+def test_the_oracle_finds_a_moved_goal_and_rows_say_what_changed(moved, apartment):
+    cfg, bank, emb, w = moved
+    eps = [Episode("fr", apartment.name, "Go to the fridge.", ("fridge_1",)),
+           Episode("bd", apartment.name, "Go to the bed.", ("bed_1",))]
+    ex = make_executor([w], cfg)
+    rows, s = evaluate_navigation(bank, [w], eps, emb, cfg, "oracle", executor=ex, memory_scenes=[apartment])
+    assert [r["changed_goals"] for r in rows] == [["move"], [""]] and [r["changed"] for r in rows] == [True, False]
+    assert all(r["success"] for r in rows)
+    fridge = w.object_by_id("fridge_1").position
+    assert np.hypot(*(np.array(rows[0]["declarations"][0]["xy"]) - fridge[:2])) < 1.5  # found in the bedroom
+    assert s["by_change"]["changed"]["episodes"] == 1 and s["by_change"]["static"]["success_rate"] == 1.0
+    # RAGNav's memory still puts the fridge in the kitchen: its top-1 is the kitchen's key pose
+    rows, _ = evaluate_navigation(bank, [w], eps[:1], emb, cfg, "ragnav", executor=ex, memory_scenes=[apartment])
+    assert rows[0]["retrieval_top1"] == [True]  # the memory's fridge (where it was)
+    assert rows[0]["declarations"] == [] or np.hypot(*(np.array(rows[0]["declarations"][0]["xy"]) - fridge[:2])) < 1.5
+
+
+def test_an_episode_cannot_target_what_left(moved, tmp_path, apartment):
+    *_, w = moved
+    f = tmp_path / "e.jsonl"
+    save_episodes([Episode("r", apartment.name, "Go to the radiator.", ("radiator_1",))], f)
+    with pytest.raises(EpisodeError, match=r"e.jsonl: line 1: goal object 'radiator_1' .*removes it"):
+        load_episodes(f, [w])
+
+
+def test_the_exploration_seen_again_in_the_world(moved, apartment):
+    cfg, _, _, w = moved
+    from test_memory_streams import synthetic_stream
+
+    ex = make_executor([w], cfg)
+    stream = synthetic_stream(apartment)
+    again = world_stream(stream, w, ex, cfg.sim)
+    ids = [o.id for o in w.objects]
+    assert again.object_ids == tuple(ids) and again.visible.shape == (len(stream.t), len(ids))
+    assert not again.visible[:, ids.index("radiator_1")].any()
+    fridge = np.array(w.object_by_id("fridge_1").position[:2])
+    seen = again.visible[:, ids.index("fridge_1")]
+    assert seen.any() and np.linalg.norm(stream.pose[seen, :2] - fridge, axis=1).max() <= cfg.sim.camera_range + 1e-3
+
+
+def test_eval_changes_cli_writes_the_static_and_changed_split(tiny_run, tmp_path, capsys):
+    run = tmp_path / "run"
+    shutil.copytree(tiny_run[0], run)
+    common = ["--quiet", *sweep_fixtures.SMALL]
+    assert main(["changes", "--scenes", str(run), "--no-plots", *common, "changes.fraction=0.4"]) == 0
+    assert main(["changes", "--scenes", str(run), "--apply", str(run / "changes"), *common]) == 0
+    eps = run / "episodes-changed" / "episodes.jsonl"
+    assert main(["episodes", "--scenes", str(run / "scenes-changed"), "--out", str(eps), *common]) == 0
+    out = tmp_path / "ev"
+    argv = ["eval", "--scenes", str(run), "--changes", str(run / "changes"), "--episodes", str(eps), "--method",
+            "oracle", "--limit", "6", "--out", str(out), *common]
+    assert main(argv) == 0
+    s = json.loads((out / "eval" / "summary.json").read_text())
+    rows = [json.loads(x) for x in (out / "eval" / "oracle" / "episodes.jsonl").read_text().splitlines()]
+    assert {"static", "changed"} == set(s["by_change"]) and all("changed_goals" in r for r in rows)
+    assert s["by_change"]["changed"]["episodes"] == sum(r["changed"] for r in rows)
+    assert "success, changed" in (out / "eval" / "table.md").read_text()
+    assert (out / "eval" / "table_by_change.md").is_file()
+    # a scene without its list, a folder that is not there: one line naming it, exit 2
+    (run / "changes" / "apartment.changes.json").rename(run / "changes" / "moved.json")
+    capsys.readouterr()
+    assert main([*argv[:-len(common) - 2], "--out", str(tmp_path / "ev2"), *common]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "apartment.changes.json: no change list for scene 'apartment'" in err
+    assert main(["eval", "--scenes", str(run), "--changes", str(tmp_path / "nope"), "--episodes", str(eps),
+                 "--out", str(tmp_path / "ev3"), *common]) == 2
+    assert "nope: no such folder of change lists" in capsys.readouterr().err
+    assert load_worlds(load_scene_set(run / "scenes"), run / "changes") == {}  # no list: the scene is static
