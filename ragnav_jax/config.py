@@ -551,6 +551,7 @@ class EvalConfig:
     retries: int = 3  # rejected candidates per goal before it is given up
     max_steps: int = 3000  # control steps per episode (the step budget; 0.1 s each by default)
     leg_max_steps: int = 1200  # control steps one leg may take before it is cut
+    observe_every: int = 20  # ragnav:online: control steps between the forward camera's frames it keeps while driving
     found_radius: float = 1.0  # metres from the goal's box within which FOUND counts (MultiON)
     approach_gap: float = 0.45  # metres from the target's box the robot stops at before declaring
     arrive_tol: float = 0.3  # metres from a leg's last waypoint that count as arrived
@@ -627,6 +628,7 @@ class EvalConfig:
         _check(self.sensor_reader_conf == 0.0 or 0.5 <= self.sensor_reader_conf < 1.0, "eval.sensor_reader_conf",
                "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
+        _check(self.observe_every >= 1, "eval.observe_every", "must be >= 1")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",
                "look_headings >= 1, path_points >= 2, batch_size >= 1")

@@ -2,6 +2,7 @@
 the memory's object indices, what left it is neither seen, touched nor passed by the check, the Oracle goes
 where a goal stands now, rows and tables split static from changed episodes, and bad inputs exit 2."""
 
+import dataclasses
 import json
 import shutil
 
@@ -13,7 +14,7 @@ from ragnav_jax.cli import main
 from ragnav_jax.config import ChangesConfig
 from ragnav_jax.evaluation.execute import make_executor
 from ragnav_jax.evaluation.navigate import evaluate_navigation
-from ragnav_jax.evaluation.worlds import goal_changes, load_worlds, world_stream
+from ragnav_jax.evaluation.worlds import explore_worlds, goal_changes, load_worlds
 from ragnav_jax.language.episodes import Episode, EpisodeError, load_episodes, save_episodes
 from ragnav_jax.world.changes import Change, ChangeList, apply_changes, generate_changes, world_after
 from ragnav_jax.world.scene import load_scene_set
@@ -96,19 +97,16 @@ def test_an_episode_cannot_target_what_left(moved, tmp_path, apartment):
         load_episodes(f, [w])
 
 
-def test_the_exploration_seen_again_in_the_world(moved, apartment):
+def test_the_etpnav_style_baseline_explores_the_world_as_it_is(moved, apartment):
     cfg, _, _, w = moved
-    from test_memory_streams import synthetic_stream
-
-    ex = make_executor([w], cfg)
-    stream = synthetic_stream(apartment)
-    again = world_stream(stream, w, ex, cfg.sim)
+    cfg = dataclasses.replace(cfg, explore=dataclasses.replace(cfg.explore, max_steps=600, batch_size=1))
+    stream = explore_worlds([w], cfg)[w.name]
     ids = [o.id for o in w.objects]
-    assert again.object_ids == tuple(ids) and again.visible.shape == (len(stream.t), len(ids))
-    assert not again.visible[:, ids.index("radiator_1")].any()
-    fridge = np.array(w.object_by_id("fridge_1").position[:2])
-    seen = again.visible[:, ids.index("fridge_1")]
-    assert seen.any() and np.linalg.norm(stream.pose[seen, :2] - fridge, axis=1).max() <= cfg.sim.camera_range + 1e-3
+    assert stream.object_ids == tuple(ids) and stream.visible.shape == (len(stream.t), len(ids))
+    assert not stream.visible[:, ids.index("radiator_1")].any()  # it left
+    seen = stream.visible[:, ids.index("fridge_1")]
+    fridge = np.array(w.object_by_id("fridge_1").position[:2])  # where it stands now, in the bedroom
+    assert seen.any() and np.linalg.norm(stream.pose[seen, :2] - fridge, axis=1).max() <= cfg.sim.camera_range + 0.5
 
 
 def test_eval_changes_cli_writes_the_static_and_changed_split(tiny_run, tmp_path, capsys):
@@ -139,3 +137,30 @@ def test_eval_changes_cli_writes_the_static_and_changed_split(tiny_run, tmp_path
                  "--out", str(tmp_path / "ev3"), *common]) == 2
     assert "nope: no such folder of change lists" in capsys.readouterr().err
     assert load_worlds(load_scene_set(run / "scenes"), run / "changes") == {}  # no list: the scene is static
+
+
+def test_the_online_memory_goes_where_it_saw_a_moved_goal(moved, apartment):
+    """Driving to the bed, the forward camera sees the fridge that left the kitchen for the bedroom: RAGNav with
+    an online memory goes back to it instead of to the kitchen its memory still names."""
+    cfg, bank, emb, w = moved
+    ex = make_executor([w], cfg)
+    eps = [Episode("bf", apartment.name, "Go to the bed, then to the fridge.", ("bed_1", "fridge_1"))]
+    rows = {m: evaluate_navigation(bank, [w], eps, emb, cfg, m, executor=ex, memory_scenes=[apartment],
+                                   trace=["bf"])[0][0] for m in ("ragnav", "ragnav:online")}
+    online, frozen = rows["ragnav:online"], rows["ragnav"]
+    assert online["success"] and online["changed_goals"] == ["", "move"]
+    kinds = [(leg["kind"], leg["goal"]) for leg in online["legs"]]
+    assert ("goto_seen", 1) in kinds and ("nav", 1) not in kinds  # never to the kitchen for the fridge
+    assert ("nav", 1) in [(leg["kind"], leg["goal"]) for leg in frozen["legs"]]
+    assert online["travel_distance_m"] < frozen["travel_distance_m"]
+
+
+def test_frames_take_every_nth_step_of_each_leg():
+    from ragnav_jax.evaluation.host_loop import _frames
+
+    trail = np.arange(2 * 10 * 3, dtype=np.float32).reshape(2, 10, 3)
+    frames, counts = _frames(trail, np.array([7, 10]), [True, True], 3)
+    assert counts.tolist() == [2, 3] and frames.shape == (2, 4, 3)
+    assert (frames[0, :2] == trail[0, [2, 5]]).all() and (frames[0, 2:] == trail[0, 5]).all()
+    assert (frames[1, :3] == trail[1, [2, 5, 8]]).all()
+    assert _frames(trail, np.array([7, 10]), [False, False], 3)[1].tolist() == [0, 0]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-SECTIONS = ("retrieval", "paths", "planning", "simulation", "end_to_end", "sweep", "closed_loop")
+SECTIONS = ("retrieval", "paths", "planning", "simulation", "end_to_end", "sweep", "closed_loop", "memory_update")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -64,6 +64,10 @@ class Profile:
     # compiles once, timed apart; the config's is timed anyway)
     loop_lanes: tuple[int, ...] = ()  # eval.batch_size lanes the device runs are also timed at (replays: the same
     # episodes queued on fewer lanes; loop_batch is timed anyway)
+
+    # online memory updates (memory/update.py) of one paper-preset scene's memory: episodes (copies) per batched
+    # update, against rebuilding the scene's memory
+    update_episodes: int = 64
 
     def replace(self, **kw) -> Profile:
         return dataclasses.replace(self, **kw)

@@ -222,9 +222,10 @@ def write_report(doc: dict, out: Path) -> Path:
               f"({sw['subgoals']} subgoals): {w['median_s']:.2f} s warm [{w['min_s']:.2f}-{w['max_s']:.2f}], "
               f"{sw['points_per_s']:.0f} points/s; first call {sw['first_call']['wall_s']:.1f} s "
               f"(compile {sw['first_call']['compile_s']:.1f} s)." + (f" Note: {sw['note']}" if sw.get("note") else ""), ""]
-    from ragnav_jax.bench.sections import closed_loop_markdown
+    from ragnav_jax.bench.sections import closed_loop_markdown, memory_update_markdown
 
     L += closed_loop_markdown(secs.get("closed_loop", {}))
+    L += memory_update_markdown(secs.get("memory_update", {}))
     made = _plots(doc, out)
     if made:
         L += ["## Plots", ""] + [f"![{f}]({f})" for f in made if f != "simulation.png"] + [""]

@@ -694,7 +694,100 @@ def closed_loop_markdown(sec: dict) -> list[str]:
     return L + ["", sec.get("note", ""), ""]
 
 
+def bench_memory_update(p: Profile, log: Callable[[str], None]) -> dict:
+    """Online memory updates (memory/update.py), each batched over `update_episodes` episodes that hold their own
+    copy of one paper-preset scene's memory (grown by free slots): a key pose inserted (paths repaired, forest
+    followed), an edge added, an edge removed; per observation (an episode's update), against rebuilding that
+    scene's memory from its exploration (`build_bank`, the hashing or MiniLM embedder of the profile) and next
+    to embedding one new caption with that embedder. Compile times apart."""
+    import jax
+    import jax.numpy as jnp
+
+    from ragnav_jax.memory.build import build_bank
+    from ragnav_jax.memory.update import add_edge, grow, insert_node, remove_edge
+    from ragnav_jax.pytrees import take
+
+    cfg = paper_config(p, 1)
+    art = _ARTIFACTS.get((p.name, 1)) or run_pipeline(cfg, p, log, execute=False, plan=False)[1]
+    scene, stream, emb = art["scenes"][0], art["explored"][0].stream, art["embedder"]
+    times = []
+    for _ in range(1 + p.repeats):  # the first call compiles
+        t0 = time.perf_counter()
+        bank, _ = build_bank([scene], [stream], cfg, embedder=emb)
+        jax.block_until_ready(bank.memory)
+        times.append(time.perf_counter() - t0)
+    first, rebuild = times[0], stats(times[1:])
+    E, rng = p.update_episodes, np.random.default_rng(0)
+    mem = grow(take(bank.memory, 0), 16)
+    live = np.flatnonzero(np.asarray(mem.node_mask))
+    pos, adj = np.asarray(mem.position), np.asarray(mem.adjacency)
+    near = rng.choice(live, E)  # each episode sees something new half a metre from one of its key poses
+    new_pos = (pos[near] + rng.normal(0, 0.5, (E, 3)) * [1, 1, 0]).astype(np.float32)
+    links = (np.linalg.norm(pos[None] - new_pos[:, None], axis=-1) < cfg.memory.delta_spatial) & np.asarray(mem.node_mask)
+    links[np.arange(E), near] = True
+    slot = np.full(E, int(np.flatnonzero(~np.asarray(mem.node_mask))[0]), np.int32)
+    edges = np.argwhere(np.triu(adj))
+    cut = edges[rng.integers(len(edges), size=E)]
+    apart = np.argwhere(np.triu(~adj & np.asarray(mem.node_mask)[:, None] & np.asarray(mem.node_mask)[None], 1))
+    join = apart[rng.integers(len(apart), size=E)]
+    mems = jax.tree.map(lambda x: jnp.broadcast_to(x, (E, *x.shape)), mem)
+    g = lambda f: jnp.asarray(np.asarray(f)[near])  # noqa: E731  the new key pose's fields, from its neighbour's
+    ops = {
+        "insert a key pose": (jax.vmap(insert_node), (mems, jnp.asarray(slot), jnp.asarray(new_pos), g(mem.yaw),
+                                                      g(mem.embedding), g(mem.sensors), g(mem.sensor_mask),
+                                                      g(mem.obs_object), g(mem.obs_distance), jnp.asarray(links))),
+        "add an edge": (jax.vmap(add_edge), (mems, jnp.asarray(join[:, 0]), jnp.asarray(join[:, 1]))),
+        "remove an edge": (jax.vmap(remove_edge), (mems, jnp.asarray(cut[:, 0]), jnp.asarray(cut[:, 1]))),
+    }
+    rows, comps = [], []
+    for name, (fn, args) in ops.items():
+        t0 = time.perf_counter()
+        compiled = jax.jit(fn).lower(*args).compile()
+        compile_s = time.perf_counter() - t0
+        jax.block_until_ready(compiled(*args))
+        rs = []
+        for _ in range(p.repeats):
+            t0 = time.perf_counter()
+            jax.block_until_ready(compiled(*args))
+            rs.append(time.perf_counter() - t0)
+        ours = _per(stats(rs), E)
+        rows.append({"update": name, "episodes": E, "nodes": int(mem.node_mask.shape[0]), "live": len(live),
+                     "per_observation": ours, "compile_s": compile_s})
+        comps.append(comparison("memory_update", f"{name}, batched over {E} episodes, vs rebuilding the scene's "
+                                f"memory ({len(live)} key poses)", ours, rebuild, "build_bank (one scene)",
+                                "observation", compile_s=compile_s, rebuild_first_call_s=first))
+        log(f"memory update: {name} {1e3 * ours['median_s']:.3f} ms per observation ({E} episodes, compile "
+            f"{compile_s:.1f} s); rebuild {rebuild['median_s']:.2f} s")
+        _partial({"rows": rows, "comparisons": comps})
+    caps = list(bank.metas[0].captions[:E]) or ["a chair"]
+    es = []
+    for _ in range(1 + p.repeats):
+        t0 = time.perf_counter()
+        emb.embed(caps)
+        es.append((time.perf_counter() - t0) / len(caps))
+    return {"rows": rows, "comparisons": comps, "rebuild": rebuild, "rebuild_first_call_s": first,
+            "embed_caption": stats(es[1:]), "embedder": cfg.memory.embedder, "scene": scene.name}
+
+
+def memory_update_markdown(sec: dict) -> list[str]:
+    """The memory_update section's table."""
+    if not sec.get("rows"):
+        return []
+    L = ["## Online memory updates", "", f"One paper-preset scene ({sec['scene']}); rebuilding its memory takes "
+         f"{sec['rebuild']['median_s']:.2f} s (first call {sec['rebuild_first_call_s']:.1f} s); embedding one new "
+         f"caption with {sec['embedder']} {1e3 * sec['embed_caption']['median_s']:.2f} ms.", "",
+         "| update | episodes | node slots (live) | ms per observation (median [min-max]) | compile s | x rebuild |",
+         "|---|---:|---:|---:|---:|---:|"]
+    for r in sec["rows"]:
+        o = r["per_observation"]
+        L.append(f"| {r['update']} | {r['episodes']} | {r['nodes']} ({r['live']}) | {1e3 * o['median_s']:.3f} "
+                 f"[{1e3 * o['min_s']:.3f}-{1e3 * o['max_s']:.3f}] | {r['compile_s']:.1f} | "
+                 f"{sec['rebuild']['median_s'] / o['median_s']:.0f} |")
+    return L + [""]
+
+
 SECTION_FUNCS = {
     "retrieval": bench_retrieval, "paths": bench_paths, "planning": bench_planning, "simulation": bench_simulation,
     "end_to_end": bench_end_to_end, "sweep": bench_sweep, "closed_loop": bench_closed_loop,
+    "memory_update": bench_memory_update,
 }

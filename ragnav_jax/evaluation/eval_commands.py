@@ -102,7 +102,7 @@ def cmd_eval(args, cfg) -> int:
     scenes, bank, streams = prepare_inputs(args.scenes, args.memory, out, cfg, args.quiet)
     explored = scenes
     if args.changes:  # the memory is the explored scenes', the tasks run in the world after the change lists
-        from ragnav_jax.evaluation.worlds import load_worlds, world_stream
+        from ragnav_jax.evaluation.worlds import explore_worlds, load_worlds
 
         worlds = load_worlds(scenes, args.changes, sorted({e.scene for e in select(load_episodes(args.episodes))}))
         scenes = [worlds.get(s.name, s) for s in scenes]
@@ -113,9 +113,8 @@ def cmd_eval(args, cfg) -> int:
     embedder = bank_embedder(bank, cfg)
     used = [s for s in scenes if s.name in {e.scene for e in episodes}]
     executor = make_executor(used, cfg)
-    if args.changes and "etpnav" in methods:  # it replays the exploration's route: what it sees there is the world's
-        world = {s.name: s for s in used if s.name in worlds}
-        streams = {k: world_stream(v, world[k], executor, cfg.sim) if k in world else v for k, v in streams.items()}
+    if args.changes and "etpnav" in methods:  # it explores for itself: the world as it is now
+        streams = {**streams, **explore_worlds([s for s in used if s.name in worlds], cfg, progress=not args.quiet)}
     verifier = Verifier.build(embedder, cfg)  # shared: its encoder cache, memory views and checks serve every method
     summaries, first = {}, None
     for m in methods:

@@ -25,7 +25,7 @@ from ragnav_jax.config import Config
 from ragnav_jax.sim import mjx  # imported without MJX's Warp notice
 from ragnav_jax.sim.controller import Path, follow, physics
 from ragnav_jax.sim.model import SimModel, batch_model, build_template, initial_data, scene_geometry, slot_counts
-from ragnav_jax.sim.sensors import look_around
+from ragnav_jax.sim.sensors import camera_visibility, look_around
 from ragnav_jax.world.scene import Scene
 
 PROGRESS_EPS = 0.002  # metres per control step below which a step counts as no progress
@@ -86,6 +86,8 @@ class Executor:
     run: object  # jitted (scene_idx (E,), d, points (E,P,2), n (E,), allowance (E,)) -> LegResult
     run_traced: object  # as run, -> (LegResult, poses (E, leg_max_steps, 3) per control step); compiled on first use
     look: object  # jitted (scene_idx (E,), d) -> (visible (E, O) bool, distance (E, O) float32)
+    see: object  # jitted (scene_idx (E,), poses (E, T, 3) x, y, yaw) -> what the forward camera sees from each pose:
+    # (visible (E, T, O) bool, distance (E, T, O), bearing (E, T, O) float32)
     init: object  # jitted (scene_idx (E,), start (E, 3)) -> mjx.Data batch
     traces: dict  # times each of run / look / init was traced (a recompile guard for tests)
     cache: dict  # host work that depends on these scenes alone (occupancy grids, local plans), shared by methods
@@ -197,13 +199,28 @@ def _executor(scenes: tuple, walls: int, objects: int, cfg: Config) -> Executor:
     look = jax.jit(look_fn)
 
     @jax.jit
+    def see(scene_idx, poses):
+        traces["see"] = traces.get("see", 0) + 1
+        m, in_axes = models(scene_idx)
+
+        def lane(m, poses, op, osz, om):
+            def one(p):
+                v = camera_visibility(m, initial_data(m, p), op, osz, om, obj_geom, sim, rb)
+                return v.visible, v.distance, v.bearing
+
+            return jax.vmap(one)(poses)
+
+        return jax.vmap(lane, in_axes=(in_axes, 0, 0, 0, 0))(
+            m, poses, tables.obj_pos[scene_idx], tables.obj_size[scene_idx], tables.obj_mask[scene_idx])
+
+    @jax.jit
     def init(scene_idx, start):
         traces["init"] += 1
         m, in_axes = models(scene_idx)
         return jax.vmap(initial_data, in_axes=(in_axes, 0))(m, start)
 
     return Executor(model, tables, tuple(s.name for s in scenes), ev.path_points, sim.timestep * sim.substeps,
-                    run, run_traced, look, init, traces, {}, lambda i, c, keep: advance(i, c, keep)[:3], look_fn,
+                    run, run_traced, look, see, init, traces, {}, lambda i, c, keep: advance(i, c, keep)[:3], look_fn,
                     status)
 
 

@@ -107,6 +107,8 @@ class EpisodeState:
     legs: list = dataclasses.field(default_factory=list)  # eval.record_legs: kind, goal, waypoints, simulated end
     trace: dict | None = None  # evaluate_navigation(trace=...): candidates and rejections; its legs are recorded
     # with every control step's pose and what the look-around saw
+    sighted: dict = dataclasses.field(default_factory=dict)  # online: object -> (2,) where the robot last saw it from
+    gone: list = dataclasses.field(default_factory=list)  # online: (2,) where the memory's instance was found missing
 
 
 class Loop:
@@ -291,9 +293,42 @@ class Loop:
 
     def current(self, st: EpisodeState, g: int) -> int | None:
         c = st.cands[g]
+        while self.spec.online and st.cptr[g] < len(c) and self.retired(st, self.estimate(st, g)):
+            st.cptr[g] += 1  # the memory's instance was found missing there: the candidate is dead
         if st.rejected[g] > self.cfg.eval.retries or st.cptr[g] >= len(c):
             return None
         return c[st.cptr[g]]
+
+    # -- the online memory (spec.online): what the robot sees while it works, and where the memory was wrong
+    @staticmethod
+    def retired(st: EpisodeState, est) -> bool:
+        """Whether the instance estimated at est (2,) was found missing (within SAME_INSTANCE_M of such a spot)."""
+        return est is not None and any(np.hypot(*(np.asarray(est) - x)) <= SAME_INSTANCE_M for x in st.gone)
+
+    def observe(self, st: EpisodeState, poses: np.ndarray, visible: np.ndarray) -> None:
+        """Records what the robot saw: visible (T, O) from poses (T, >= 2) in time order; each object seen keeps
+        the latest position it was seen from."""
+        visible = visible[:, : len(self.scenes[st.ep.scene].objects)]
+        seen = np.flatnonzero(visible.any(0))
+        last = len(visible) - 1 - np.argmax(visible[::-1, seen], axis=0)
+        for o, t in zip(seen.tolist(), last.tolist()):
+            st.sighted[o] = np.asarray(poses[t, :2], np.float32)
+
+    def sighted_leg(self, st: EpisodeState, g: int) -> tuple | None:
+        """A leg back to where the robot saw an object that passes goal g's check (the nearest such place along
+        the map), to approach it; None when it saw none."""
+        table = self.verdicts[st.e][g] if st.e < len(self.verdicts) and g < len(self.verdicts[st.e]) else None
+        if table is None:
+            return None
+        fits = [o for o in st.sighted if o < len(table) and table[o] and (g, o) not in st.skip]
+        if not fits:
+            return None
+        cost = self.order_cost(st.b)
+        where = {o: self.attach(st.b, st.sighted[o]) for o in fits}
+        o = min(fits, key=lambda o: (cost[st.node, where[o]], o))
+        st.skip.add((g, o))  # one visit per sighting
+        path = reconstruct_path(self.drive_pred[st.b], st.node, where[o]) or [st.node]
+        return ("goto_seen", g, o, np.concatenate([self.pos[st.b][path], st.sighted[o][None]]).astype(np.float32))
 
     def replan(self, st: EpisodeState) -> None:
         """Re-solves the order of the remaining goals from the robot's node with their current candidates."""
@@ -406,6 +441,8 @@ class Loop:
                 continue
             if self.spec.explores:
                 return self.etp_leg(st, g, pose)
+            if self.spec.online and (leg := self.sighted_leg(st, g)) is not None:
+                return leg
             node, kind = self.current(st, g), "nav"
             if node is None:
                 node, kind = self.search_next(st, g), "search"
@@ -564,6 +601,8 @@ class Loop:
             else:  # stuck short of the node, or off the map: re-attach where a straight line leads
                 st.node = self.attach(st.b, pose[:2])
             st.look_steps += self.look_cost
+            if self.spec.online:
+                self.observe(st, pose[None], visible[None])
             if not self.spec.reads:  # knows the true goal position: no check needed
                 gobj = self.goal_object(st, g)
                 ok = [sc.objects.index(gobj)] if gobj is not None else []
@@ -599,6 +638,8 @@ class Loop:
             if closer:  # the key pose's view was merged over several records: look again near the instance
                 st.leg = ("closer", g, payload, self.closer_points(st, est, pose))
                 return
+            if self.spec.online and arrived and est is not None:
+                st.gone.append(np.asarray(est, np.float32))  # the memory was wrong there: retire its instance
             self.reject(st, g, "not_confirmed" if arrived else "stuck")
             st.leg = None
         elif kind in ("explore", "goto_seen"):
@@ -627,6 +668,8 @@ class Loop:
                     return
             else:
                 o = payload
+                if self.spec.online:  # back where it saw the object, maybe far from its last key pose
+                    st.node = self.attach(st.b, pose[:2])
             st.leg = ("approach", g, o, self.approach_points(st, o, pose))
         elif kind == "approach":
             obj = sc.objects[payload]
@@ -693,7 +736,7 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
     sidx = jnp.asarray(scene_idx)
     d = ex.init(sidx, jnp.asarray(start))
     poses = start.copy()
-    traced = any(st.trace is not None for st in chunk)
+    traced = any(st.trace is not None for st in chunk) or loop.spec.online
     while True:
         legs = [None] * E
         for i, st in enumerate(chunk):
@@ -727,6 +770,13 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
         arrived, steps, length = np.asarray(res.arrived), np.asarray(res.steps), np.asarray(res.length)
         pen, vis = np.asarray(res.penetration), np.asarray(vis)
         trail = None if trail is None else np.asarray(trail)  # (B, leg_max_steps, 3) poses per control step
+        if loop.spec.online:  # what the forward camera saw on the way, every eval.observe_every control steps
+            frames, counts = _frames(trail, steps, [leg is not None for leg in legs] + [False] * (B - E),
+                                     cfg.eval.observe_every)
+            seen = np.asarray(ex.see(sidx, jnp.asarray(frames))[0])
+            for i in range(E):
+                if counts[i]:
+                    loop.observe(chunk[i], frames[i, : counts[i]], seen[i, : counts[i]])
         for i, leg in enumerate(legs):
             if leg is None:
                 continue
@@ -743,3 +793,18 @@ def _run_chunk(loop: Loop, chunk: list, B: int, cfg: Config) -> None:
                     st.legs[-1].update(poses=np.round(trail[i, : steps[i]].astype(np.float64), 3).tolist(),
                                        visible=[objs[o].id for o in np.flatnonzero(vis[i]) if o < len(objs)])
             loop.after_leg(st, leg, poses[i], bool(arrived[i]), vis[i])
+
+
+def _frames(trail: np.ndarray, steps: np.ndarray, active: Sequence[bool], every: int) -> tuple[np.ndarray, np.ndarray]:
+    """(B, F, 3) poses of every `every`-th control step of each active lane's leg (trail (B, T, 3), steps (B,)),
+    padded with the last (F: the most frames of a lane, rounded up to a power of two so that few shapes
+    compile), and (B,) frame counts."""
+    B = trail.shape[0]
+    idx = [np.arange(every - 1, int(steps[i]), every) if active[i] else np.zeros(0, int) for i in range(B)]
+    counts = np.array([len(t) for t in idx], np.int32)
+    F = 1 << max(int(counts.max()) - 1, 0).bit_length()
+    out = np.zeros((B, F, 3), np.float32)
+    for i, t in enumerate(idx):
+        if len(t):
+            out[i, : len(t)], out[i, len(t) :] = trail[i, t], trail[i, t[-1]]
+    return out, counts

@@ -1,6 +1,7 @@
 """The navigation methods, as flags of one closed loop: `NAV_METHODS` and each one's `MethodSpec` (`method_spec`).
 
-RAGNav and its retrieval ablations; `ragnav:no_topology` also plans and drives straight lines (no map); the
+RAGNav and its retrieval ablations; `ragnav:no_topology` also plans and drives straight lines (no map);
+`ragnav:online` updates its memory while it works (worlds that change after exploration: `host_loop.Loop.observe`); the
 retrieval baselines (naive_rag, graphrag, lightrag) on RAGNav's planner; navigation baselines reimplemented
 *in the style of* the papers: `remembr` (flat caption memory with positions, text retrieval plus a position
 term, instruction order, the same map paths and local planner as RAGNav), `etpnav` (no prior memory: replays
@@ -18,7 +19,7 @@ from ragnav_jax.errors import UserError
 from ragnav_jax.retrieval.baselines import BASELINES
 
 NAV_METHODS = ("ragnav", "ragnav:no_forest", "ragnav:no_topology", "ragnav:no_spatial", "ragnav:no_boost",
-               "naive_rag", "graphrag", "lightrag", "remembr", "etpnav", "oracle")
+               "naive_rag", "graphrag", "lightrag", "remembr", "etpnav", "oracle", "ragnav:online")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -33,6 +34,8 @@ class MethodSpec:
     explores: bool = False  # finds goals by replaying its exploration, with no retrieval (the ETPNav-style baseline)
     variant: str = "ragnav"  # kernel: the ablation ("ragnav", "no_forest", ...); text: the model (a BASELINES name)
     positions: bool = False  # text: a position in the instruction adds a Gaussian term over node positions (ReMEmbR)
+    online: bool = False  # updates its memory while it works (host_loop.Loop.observe): what it sees on the way and
+    # where the memory was found wrong
 
 
 def method_spec(name: str) -> MethodSpec:
@@ -40,7 +43,9 @@ def method_spec(name: str) -> MethodSpec:
         raise UserError(f"unknown method '{name}' (known: {', '.join(NAV_METHODS)})")
     if name.startswith("ragnav"):
         variant = name.split(":", 1)[1] if ":" in name else "ragnav"
-        return MethodSpec(name, "kernel", variant == "no_topology", True, variant=variant)
+        online = variant == "online"
+        return MethodSpec(name, "kernel", variant == "no_topology", True, variant="ragnav" if online else variant,
+                          online=online)
     if name in BASELINES:
         return MethodSpec(name, "text", False, True, variant=name)
     # ReMEmbR hands its retrieved goal to a standard navigation stack: the same map paths and local planner as

@@ -124,7 +124,7 @@ def evaluate_navigation(bank: MemoryBank, scenes: Sequence[Scene], episodes: Seq
     t0 = time.perf_counter()
     B = min(cfg.eval.batch_size, lanes_for(len(states)))
     bar = _progress(len(states), progress, method)
-    if cfg.eval.engine == "device" and not spec.explores and not trace and not cfg.eval.record_legs:
+    if cfg.eval.engine == "device" and not spec.explores and not spec.online and not trace and not cfg.eval.record_legs:
         from ragnav_jax.evaluation.loop.program import run_device
 
         run_device(loop, states, cfg, progress=bar)

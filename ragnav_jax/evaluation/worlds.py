@@ -9,8 +9,7 @@ the scenes after their change lists.
 A world keeps the memory's object indices (`world.changes.world_after`): the explored scene's objects in their
 order, moved ones where they stand now, removed ones `absent`, added ones last. Retrieval, grounding and what
 the memory knows read the explored scenes; driving, seeing, the check's perception and the Oracle read the
-world. The ETPNav-style baseline replays the exploration's route; in a changed world what it sees along it is
-seen again in the world (`world_stream`).
+world. The ETPNav-style baseline, which explores for itself, explores the world as it is now (`explore_worlds`).
 """
 
 from __future__ import annotations
@@ -19,21 +18,18 @@ import dataclasses
 from collections.abc import Sequence
 from pathlib import Path
 
-import jax
-import jax.numpy as jnp
 import numpy as np
 
 from ragnav_jax.errors import UserError
 from ragnav_jax.world.changes import changes_path, load_changes, world_after
 from ragnav_jax.world.scene import Scene
 
-STREAM_CHUNK = 256  # exploration records seen again per jitted call
-
 
 def load_worlds(scenes: Sequence[Scene], folder: str | Path, needed: Sequence[str] = ()) -> dict[str, Scene]:
-    """Scene name -> the world after its change list (`world_after`), from the change lists in `folder` (`<scene>.changes.json`, as `ragnav changes` writes
-    them). Every scene named in `needed` must have a list (UserError naming the file otherwise); a list that
-    does not fit its scene raises SceneError naming the change."""
+    """Scene name -> the world after its change list (`world_after`), from the lists in `folder`
+    (`<scene>.changes.json`, as `ragnav changes` writes them). Every scene named in `needed` must have a list
+    (UserError naming the file otherwise); a list that does not fit its scene raises SceneError naming the
+    change."""
     folder = Path(folder)
     if not folder.is_dir():
         raise UserError(f"{folder}: no such folder of change lists (write one with `ragnav changes`)")
@@ -58,35 +54,28 @@ def goal_changes(goals: Sequence[str], world: Scene, memory: Scene) -> list[str]
     return ["add" if g not in before else "move" if now[g].position != before[g].position else "" for g in goals]
 
 
-def world_stream(stream, world: Scene, executor, sim_cfg):
-    """The exploration stream as `world` shows it now: the same records (poses, lidar), with what the forward
-    camera sees from each pose (`visible`, `distance`, `bearing`) cast again in the world's MJX model (objects
-    moved, removed or added; doors closed) of `executor`. Columns follow the world's objects."""
-    from ragnav_jax.sim.model import GEOMETRY_FIELDS, initial_data
-    from ragnav_jax.sim.sensors import camera_visibility
+def explore_worlds(worlds: Sequence[Scene], cfg, progress: bool = False) -> dict:
+    """Scene name -> the robot's own frontier exploration of each world as it is now (`sim.explore`, the
+    configured budget and seed), its object columns in the world's order (what left it: never seen). The
+    ETPNav-style baseline explores for itself instead of remembering: in a changed world it explores that world,
+    closed doors and all, rather than replaying a route through the house as it was."""
+    from ragnav_jax.sim.explore import explore_scenes
 
-    ex = executor
-    s = ex.names.index(world.name)
-    lay = ex.model.layout
-    obj_geom = jnp.arange(lay.obj_geom0, lay.obj_geom0 + lay.objects, dtype=jnp.int32)
-    m = ex.model.mx.tree_replace({k: getattr(ex.tables.geometry, k)[s] for k in GEOMETRY_FIELDS})
-    pos, size, mask = ex.tables.obj_pos[s], ex.tables.obj_size[s], ex.tables.obj_mask[s]
+    present = [dataclasses.replace(w, objects=tuple(o for o in w.objects if o.id not in w.absent), absent=frozenset())
+               for w in worlds]
+    out = {}
+    for w, r in zip(worlds, explore_scenes(present, cfg, progress=progress)):
+        st = r.stream
+        col = {i: k for k, i in enumerate(st.object_ids)}
+        take = np.array([col.get(o.id, -1) for o in w.objects])
+        out[w.name] = dataclasses.replace(st, visible=_columns(st.visible, take, False),
+                                          distance=_columns(st.distance, take, np.inf),
+                                          bearing=_columns(st.bearing, take, 0.0), object_ids=tuple(o.id for o in w.objects))
+    return out
 
-    @jax.jit
-    def see(poses):  # (C, 3) x, y, yaw -> what the camera sees of every object from each
-        def one(p):
-            v = camera_visibility(m, initial_data(m, p), pos, size, mask, obj_geom, sim_cfg, lay.robot_body)
-            return v.visible, v.distance, v.bearing
 
-        return jax.vmap(one)(poses)
-
-    xyyaw = np.asarray(stream.pose)[:, [0, 1, 3]].astype(np.float32)
-    out = []
-    for c0 in range(0, len(xyyaw), STREAM_CHUNK):
-        chunk = xyyaw[c0 : c0 + STREAM_CHUNK]
-        pad = np.concatenate([chunk, np.repeat(chunk[-1:], STREAM_CHUNK - len(chunk), 0)])
-        out.append([np.asarray(x)[: len(chunk)] for x in see(jnp.asarray(pad))])
-    k = len(world.objects)
-    vis, dist, bear = (np.concatenate([o[i] for o in out])[:, :k] for i in range(3))
-    return dataclasses.replace(stream, visible=vis, distance=dist.astype(np.float32), bearing=bear.astype(np.float32),
-                               object_ids=tuple(o.id for o in world.objects))
+def _columns(a: np.ndarray, take: np.ndarray, fill) -> np.ndarray:
+    """(T, len(take)) columns of a (T, K) at take (K index, -1: fill)."""
+    out = np.full((a.shape[0], len(take)), fill, a.dtype)
+    out[:, take >= 0] = a[:, take[take >= 0]]
+    return out
