@@ -552,6 +552,7 @@ class EvalConfig:
     max_steps: int = 3000  # control steps per episode (the step budget; 0.1 s each by default)
     leg_max_steps: int = 1200  # control steps one leg may take before it is cut
     observe_every: int = 20  # ragnav:online: control steps between the forward camera's frames it keeps while driving
+    tour_radius: float = 3.0  # ragnav:online: search over, a key pose farther than this from every look-around is unseen
     found_radius: float = 1.0  # metres from the goal's box within which FOUND counts (MultiON)
     approach_gap: float = 0.45  # metres from the target's box the robot stops at before declaring
     arrive_tol: float = 0.3  # metres from a leg's last waypoint that count as arrived
@@ -629,6 +630,7 @@ class EvalConfig:
                "must be 0 or in [0.5, 1)")
         _check(self.max_steps >= 1 and self.leg_max_steps >= 1, "eval.max_steps", "step budgets must be >= 1")
         _check(self.observe_every >= 1, "eval.observe_every", "must be >= 1")
+        _check(self.tour_radius > 0, "eval.tour_radius", "must be > 0")
         _check(self.found_radius > 0 and self.approach_gap >= 0, "eval.found_radius", "must be > 0")
         _check(self.look_headings >= 1 and self.path_points >= 2 and self.batch_size >= 1, "eval.look_headings",
                "look_headings >= 1, path_points >= 2, batch_size >= 1")

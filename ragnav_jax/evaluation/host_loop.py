@@ -109,6 +109,7 @@ class EpisodeState:
     # with every control step's pose and what the look-around saw
     sighted: dict = dataclasses.field(default_factory=dict)  # online: object -> (2,) where the robot last saw it from
     gone: list = dataclasses.field(default_factory=list)  # online: (2,) where the memory's instance was found missing
+    looks: list = dataclasses.field(default_factory=list)  # online: (2,) where the robot looked around
 
 
 class Loop:
@@ -398,12 +399,29 @@ class Loop:
         self.replan(st)
 
     def search_next(self, st: EpisodeState, g: int) -> int | None:
-        """The nearest key pose still to search for goal g (none looked around at for it yet), or None."""
+        """The nearest key pose still to search for goal g (none looked around at for it yet), or None: of those
+        where the instruction puts the goal (search.py), then, with an online memory, a tour of the house it
+        has not seen since exploring (`tour_next`)."""
         if not self.spec.search or st.e >= len(self.search) or g >= len(self.search[st.e]):
             return None
         left = [n for n in self.search[st.e][g] if (g, n) not in st.looked]
         cost = self.order_cost(st.b)
-        return min(left, key=lambda n: cost[st.node, n]) if left else None
+        if left:
+            return min(left, key=lambda n: cost[st.node, n])
+        return self.tour_next(st, g) if self.spec.online else None
+
+    def tour_next(self, st: EpisodeState, g: int) -> int | None:
+        """The next stop of a tour of what the robot has not seen: the nearest (along the map) of the reachable key
+        poses farther than eval.tour_radius from every place it looked around, not looked at for goal g yet.
+        (Choosing the stop that brings most unseen key poses within that radius per metre did worse on the
+        seen split's changed houses: 0.760 against 0.781.)"""
+        cost = self.order_cost(st.b)
+        live = np.flatnonzero(self.mask[st.b] & np.isfinite(cost[st.node]))
+        if st.looks:
+            d = np.linalg.norm(self.pos[st.b][live, None] - np.asarray(st.looks)[None], axis=-1).min(1)
+            live = live[d > self.cfg.eval.tour_radius]
+        stops = [int(n) for n in live if (g, int(n)) not in st.looked]
+        return min(stops, key=lambda n: cost[st.node, n]) if stops else None
 
     def goal_object(self, st: EpisodeState, g: int):
         """The scene object of the episode's true goal g (the Oracle's goals are the true ones)."""
@@ -603,6 +621,7 @@ class Loop:
             st.look_steps += self.look_cost
             if self.spec.online:
                 self.observe(st, pose[None], visible[None])
+                st.looks.append(np.asarray(pose[:2], np.float32))
             if not self.spec.reads:  # knows the true goal position: no check needed
                 gobj = self.goal_object(st, g)
                 ok = [sc.objects.index(gobj)] if gobj is not None else []
