@@ -15,8 +15,9 @@ vmap over episodes from outside, each episode its own copy. Paths keep `memory/p
 Incremental shortest paths. A new node v with edges of weight w_a to nodes a: cost[v, j] = min_a w_a + cost[a, j],
 then every pair (i, j) may pass through v: cost[i, v] + cost[v, j] (O(N^2)). A new edge (u, v, w): every pair may
 use it once, i ~> u -> v ~> j or i ~> v -> u ~> j, over the old shortest paths (O(N^2)). A removed edge: the pairs
-whose shortest length the edge could carry are reset and repaired by Bellman-Ford relaxations of their rows over
-the edges left (O(R N^2) per pass, R rows touched), the rest kept. The forest keeps its cut: a new leaf joins the
+whose shortest length the edge could carry are reset to the edges left and repaired by min-plus squaring of their
+rows against the whole matrix (O(R N^2) per pass, R rows touched, a few passes: each doubles the hops), the rest
+kept. The forest keeps its cut: a new leaf joins the
 level-1 cluster of the live key pose nearest it in the clustering's hybrid distance, and the clusters above it
 follow; a rebuild may cut the dendrogram elsewhere (tests/test_memory_update.py states the bound).
 """
@@ -161,54 +162,55 @@ def add_edge(mem: DualBasisMemory, u, v) -> DualBasisMemory:
 
 
 @functools.partial(jax.jit, static_argnames="rows")
-def _relax_rows(cost, pred, weights, todo, rows: int):
-    """Bellman-Ford over the rows marked `todo` (N,), `rows` of them at a time, until nothing changes."""
+def _repair_rows(cost, pred, todo, rows: int):
+    """Min-plus squaring of the rows marked `todo` (N,) against the whole matrix, `rows` of them per block,
+    until nothing changes: each pass doubles the hops of the paths found, so a few passes repair every row
+    (the rows not marked are exact and stay)."""
     N = cost.shape[0]
+    order = jnp.argsort(~todo, stable=True)  # the rows to repair first
+    starts = jnp.arange(0, N, rows, dtype=jnp.int32)
 
     def one_block(carry, start):
-        cost, pred = carry
-        order = jnp.argsort(~todo, stable=True)  # the rows to repair first
+        cost, pred, changed = carry
         r = jax.lax.dynamic_slice_in_dim(order, start, rows)
         ok = jax.lax.dynamic_slice_in_dim(todo[order], start, rows)
-        c, p = cost[r], pred[r]
+        via = cost[r][:, :, None] + cost[None, :, :]  # (R, k, j): i ~> k ~> j
+        k = jnp.argmin(via, axis=1).astype(jnp.int32)
+        best = jnp.min(via, axis=1)
+        better = ok[:, None] & (best < cost[r] - _EPS)
+        p = jnp.where(better, pred[k, jnp.arange(N)[None, :]], pred[r])  # j's predecessor on the k ~> j path
+        cost = cost.at[r].set(jnp.where(better, best, cost[r]))
+        return (cost, pred.at[r].set(p), changed | jnp.any(better)), None
 
-        def cond(x):
-            return x[2]
+    def cond(x):
+        return x[2]
 
-        def body(x):
-            c, p, _ = x
-            via = c[:, :, None] + weights[None]  # (R, k, j)
-            k = jnp.argmin(via, axis=1).astype(jnp.int32)
-            best = jnp.min(via, axis=1)
-            better = best < c - _EPS
-            return jnp.where(better, best, c), jnp.where(better, k, p), jnp.any(better)
+    def body(x):
+        cost, pred, _ = x
+        (cost, pred, changed), _ = jax.lax.scan(one_block, (cost, pred, False), starts)
+        return cost, pred, changed
 
-        c, p, _ = jax.lax.while_loop(cond, body, (c, p, jnp.any(ok)))
-        cost = cost.at[r].set(jnp.where(ok[:, None], c, cost[r]))
-        pred = pred.at[r].set(jnp.where(ok[:, None], p, pred[r]))
-        return (cost, pred), None
-
-    starts = jnp.arange(0, N, rows, dtype=jnp.int32)
-    (cost, pred), _ = jax.lax.scan(one_block, (cost, pred), starts)
+    cost, pred, _ = jax.lax.while_loop(cond, body, (cost, pred, jnp.any(todo)))
     return cost, pred
 
 
 def remove_edge(mem: DualBasisMemory, u, v, rows: int = 32) -> DualBasisMemory:
-    """`mem` without the edge u - v: the pairs whose shortest length it could carry are repaired over the edges
-    left, `rows` source rows at a time (`_relax_rows`); the rest keep their paths."""
+    """`mem` without the edge u - v: the pairs whose shortest length it could carry are reset to the edges left
+    and repaired by min-plus squaring of their rows (`_repair_rows`, `rows` rows a block); the rest keep their
+    paths."""
     N = mem.node_mask.shape[0]
+    idx = jnp.arange(N, dtype=jnp.int32)
     w = mem.distance[u, v]
     cost, pred = mem.path_cost, mem.path_pred
     tol = 1e-4 * (1.0 + cost)
     carried = (jnp.abs(cost[:, u, None] + w + cost[None, v, :] - cost) <= tol) | (
         jnp.abs(cost[:, v, None] + w + cost[None, u, :] - cost) <= tol)
-    carried &= mem.adjacency[u, v]
+    carried &= mem.adjacency[u, v] & ~jnp.eye(N, dtype=bool)
     adj = mem.adjacency.at[u, v].set(False).at[v, u].set(False)
-    eye = jnp.eye(N, dtype=bool)
-    cost = jnp.where(carried & ~eye, jnp.inf, cost)
-    pred = jnp.where(carried & ~eye, -1, pred)
     weights = jnp.where(adj, mem.distance, jnp.inf)
-    cost, pred = _relax_rows(cost, pred, weights, jnp.any(carried & ~eye, axis=1), min(rows, N))
+    cost = jnp.where(carried, weights, cost)  # a reset pair keeps its direct edge, if it has one
+    pred = jnp.where(carried, jnp.where(jnp.isfinite(weights), idx[:, None], -1), pred)
+    cost, pred = _repair_rows(cost, pred, jnp.any(carried, axis=1), min(rows, N))
     return mem.replace(adjacency=adj, path_cost=cost, path_pred=pred, component=_components(cost, mem.node_mask))
 
 
