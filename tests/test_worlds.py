@@ -146,6 +146,9 @@ def test_eval_changes_cli_writes_the_static_and_changed_split(tiny_run, tmp_path
                  "--out", str(tmp_path / "ev3"), *common]) == 2
     assert "nope: no such folder of change lists" in capsys.readouterr().err
     assert load_worlds(load_scene_set(run / "scenes"), run / "changes") == {}  # no list: the scene is static
+    assert main(["eval", "--scenes", str(run), "--changes", str(run / "changes"), "--episodes", str(eps),
+                 "--out", str(tmp_path / "ev4"), *common, "eval.engine=device"]) == 2
+    assert "--changes runs on the host engine" in capsys.readouterr().err
 
 
 def test_the_online_memory_goes_where_it_saw_a_moved_goal(loops):

@@ -104,6 +104,9 @@ def cmd_eval(args, cfg) -> int:
     if args.changes:  # the memory is the explored scenes', the tasks run in the world after the change lists
         from ragnav_jax.evaluation.worlds import explore_worlds, load_worlds
 
+        if cfg.eval.engine == "device":
+            raise UserError("--changes runs on the host engine (eval.engine=host); the device engine has not been "
+                            "checked on changed houses")
         worlds = load_worlds(scenes, args.changes, sorted({e.scene for e in select(load_episodes(args.episodes))}))
         scenes = [worlds.get(s.name, s) for s in scenes]
     episodes = select(load_episodes(args.episodes, scenes))
