@@ -55,8 +55,11 @@ def moved(tiny_run, apartment):
 @pytest.fixture(scope="module")
 def loops(moved, apartment):
     """RAGNav with the memory as explored and with an online memory, in the changed apartment (traced rows):
-    "fr" asks for the fridge with no room or hint, "bf" for the bed and then the fridge."""
+    "fr" asks for the fridge with no room or hint, "bf" for the bed and then the fridge. The tour counts a key pose
+    seen within 2 m of a look-around here (the default 3 m, chosen on the seen split's houses, leaves the
+    bedroom's far corner, 4.2 m from the nearest stop, unseen in this small map)."""
     cfg, bank, emb, w, ex = moved
+    cfg = dataclasses.replace(cfg, eval=dataclasses.replace(cfg.eval, tour_radius=2.0))
     eps = [Episode("fr", apartment.name, "Go to the fridge.", ("fridge_1",)),
            Episode("bf", apartment.name, "Go to the bed, then to the fridge.", ("bed_1", "fridge_1"))]
     return {m: {r["episode"]: r for r in evaluate_navigation(bank, [w], eps, emb, cfg, m, executor=ex,
@@ -66,21 +69,22 @@ def loops(moved, apartment):
 
 def test_what_left_the_world_is_not_seen_nor_in_the_way(moved, apartment):
     cfg, _, _, w, ex = moved
-    k = [o.id for o in w.objects].index("radiator_1")
+    ids = [o.id for o in w.objects]
+    k, fridge = ids.index("radiator_1"), ids.index("fridge_1")
     assert not bool(ex.tables.obj_mask[0, k])
+    lanes = np.zeros(4, np.int32)  # the loop's lane count for a few episodes: its programs, compiled once
     rad = apartment.object_by_id("radiator_1").position
-    d = ex.init(np.zeros(1, np.int32), np.array([[rad[0], rad[1] + 0.9, -np.pi / 2]], np.float32))
-    visible, _ = ex.look(np.zeros(1, np.int32), d)
-    fridge = [o.id for o in w.objects].index("fridge_1")
-    assert not bool(visible[0, k])
+    start = np.array([[rad[0], rad[1] + 0.9, -np.pi / 2], [2.5, 6.5, np.pi]] * 2, np.float32)
+    d = ex.init(lanes, start)
+    visible = np.asarray(ex.look(lanes, d)[0])
+    assert not visible[:, k].any()
+    assert visible[1, fridge]  # the fridge is seen where it stands now, from the bedroom
     # the robot drives through where the radiator stood
-    pts = np.zeros((1, ex.path_points, 2), np.float32)
-    pts[0, :2] = [[rad[0], rad[1] + 0.9], [rad[0], rad[1] - 0.6]]
-    res = ex.run(np.zeros(1, np.int32), d, pts, np.array([2]), np.array([200]))
+    pts = np.zeros((4, ex.path_points, 2), np.float32)
+    pts[:, :2] = [[rad[0], rad[1] + 0.9], [rad[0], rad[1] - 0.6]]
+    d = ex.init(lanes, np.repeat(start[:1], 4, 0))
+    res = ex.run(lanes, d, pts, np.full(4, 2, np.int32), np.full(4, 200, np.int32))
     assert bool(res.arrived[0])
-    # the fridge is seen where it stands now, from the bedroom
-    d = ex.init(np.zeros(1, np.int32), np.array([[2.5, 6.5, np.pi]], np.float32))
-    assert bool(ex.look(np.zeros(1, np.int32), d)[0][0, fridge])
 
 
 def test_the_oracle_finds_a_moved_goal_and_rows_say_what_changed(moved, loops, apartment):
