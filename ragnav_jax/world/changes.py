@@ -227,9 +227,9 @@ def world_after(scene: Scene, cl: ChangeList, source: str = "<changes>") -> Scen
     ones. A memory's object indices (`obs_object`) are therefore valid in it; checked like `apply_changes`."""
     after = apply_changes(scene, cl, source)
     now = {o.id: o for o in after.objects}
-    before = [o.id for o in scene.objects]
-    objects = [now.get(i, o) for i, o in zip(before, scene.objects)] + [o for o in after.objects if o.id not in set(before)]
-    return dataclasses.replace(after, objects=tuple(objects), absent=frozenset(i for i in before if i not in now))
+    before = {o.id for o in scene.objects}
+    objects = [now.get(o.id, o) for o in scene.objects] + [o for o in after.objects if o.id not in before]
+    return dataclasses.replace(after, objects=tuple(objects), absent=frozenset(before - set(now)))
 
 
 
