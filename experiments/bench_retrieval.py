@@ -61,8 +61,12 @@ def synthetic_index(n: int, d: int, m: int, deg: int, rng) -> RetrievalIndex:
         nbr_mask=jnp.asarray(nbr >= 0),
         inst_emb=jnp.asarray(unit(rng.normal(size=(n_inst, 2, d))).astype(np.float32)),
         inst_phrase_mask=jnp.asarray(rng.uniform(size=(n_inst, 2)) < 0.8).at[:, 0].set(True),
+        inst_name_emb=jnp.asarray(unit(rng.normal(size=(n_inst, 2, d))).astype(np.float32)),
+        inst_name_mask=jnp.ones((n_inst, 2), bool),
         inst_pos=jnp.asarray(pos[rng.integers(0, n, n_inst)]), inst_sensors=jnp.asarray(rng.uniform(0, 60, (n_inst, 3)).astype(np.float32)),
         inst_sensor_mask=jnp.asarray(rng.uniform(size=(n_inst, 3)) < 0.3), inst_mask=jnp.ones(n_inst, bool),
+        inst_first=jnp.asarray(rng.uniform(0, 100, n_inst).astype(np.float32)),
+        inst_last=jnp.asarray(rng.uniform(100, 200, n_inst).astype(np.float32)),
         slot_inst=jnp.asarray(rng.integers(0, n_inst, (n, m)).astype(np.int32)), slot_mask=jnp.ones((n, m), bool),
         cluster_emb=jnp.asarray(cl), cluster_label_emb=jnp.asarray(cl), cluster_mask=jnp.asarray(cmask),
         cluster_parent=jnp.asarray(np.stack([par0, np.full(C, -1, np.int32)])),
@@ -80,7 +84,8 @@ def queries(q: int, d: int, rng) -> QueryArrays:
         has_room=jnp.asarray(rng.uniform(size=q) < 0.3), hint=jnp.asarray(rng.uniform(0, 10, (q, 2)).astype(np.float32)),
         has_hint=jnp.asarray(rng.uniform(size=q) < 0.3), sensor_channel=jnp.zeros(q, jnp.int32),
         sensor_op=jnp.asarray(rng.integers(0, 6, q).astype(np.int32)), sensor_value=jnp.full(q, 20.0, jnp.float32),
-        sensor_scale=jnp.full(q, 3.0, jnp.float32),
+        sensor_scale=jnp.full(q, 3.0, jnp.float32), time_order=jnp.asarray(rng.integers(0, 3, q).astype(np.int32)),
+        time_rank=jnp.asarray(rng.integers(1, 3, q).astype(np.int32)),
     )
 
 

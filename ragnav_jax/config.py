@@ -201,8 +201,15 @@ class EpisodesConfig:
     # | unseen_q (phrasings_q.py, set Q: a further held-out set by an author who never read the parser)
     # | unseen_r (phrasings_r.py, set R: another held-out set by an author who never read the parser);
     # the names (synonyms, hypernyms) come with the houses' catalogue (episodes.names())
+    # time-indexed episodes (ragnav episodes --time-indexed, language/time_episodes.py):
+    time_per_scene: int = 12  # queries drawn per explored scene
+    time_gap: int = 25  # stream records between the target's view and its neighbours' in the asked order
+    time_phrasing: str = "seen"  # seen (the generator's own templates) | heldout (time_text_heldout.py)
 
     def __post_init__(self):
+        _check(self.time_per_scene >= 1, "episodes.time_per_scene", "must be >= 1")
+        _check(self.time_gap >= 0, "episodes.time_gap", "must be >= 0")
+        _check(self.time_phrasing in ("seen", "heldout"), "episodes.time_phrasing", "must be seen or heldout")
         for k in ("text", "text_location", "text_location_sensor"):
             _check(getattr(self, k) >= 0, f"episodes.{k}", "must be >= 0")
         _check(1 <= self.min_goals <= self.max_goals <= 8, "episodes.min_goals", "need 1 <= min_goals <= max_goals <= 8")
@@ -458,6 +465,9 @@ class RetrievalConfig:
     sigma_rel: float = hyper(3.0, gt=0)  # metres, instance-level "A near B" Gaussian width (ours; retrieval/score.py)
     w_loc: float = hyper(1.0, sweep=True, tune="log")  # exponent of the location term (0 ignores hints)
     w_sensor: float = hyper(1.0, sweep=True, tune="log")  # exponent of the sensor term (0 ignores sensor constraints)
+    w_time: float = hyper(1.0, ge=0, sweep=True)  # exponent of the time term ("the mug you saw first"; 0 ignores it)
+    w_recency: float = hyper(0.0, ge=0, sweep=True)  # recency: an instance last seen at relative age a in [0, 1]
+    # of the memory's span scores exp(-w_recency * a) (0: off, the paper)
     w_room: float = hyper(1.0)  # soft room term from the forest's summary labels (0: off)
     tau_room: float = hyper(0.05)  # softness of the room term (similarity units)
     forest_lock: float = hyper(0.0, among=(0.0, 1.0))  # 1: a room phrase also prunes the leaves outside the beam's

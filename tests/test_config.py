@@ -143,7 +143,7 @@ def test_hyperparameter_table_drives_range_checks_sweep_axes_tuning_and_params()
     assert [f.name for f in dataclasses.fields(RetrievalParams)] == [*table, *FLAGS]
     assert {n for n, h in table.items() if h.sweep} == {
         "sigma", "eta", "top_k", "hops", "boost_hops", "beam", "anchor_threshold", "boost_threshold", "w_slot",
-        "match_threshold", "sigma_loc", "w_loc", "w_sensor"}
+        "match_threshold", "sigma_loc", "w_loc", "w_sensor", "w_time", "w_recency"}
     assert set(TUNABLE) == {"sigma", "eta", "sigma_loc", "w_slot", "w_loc", "w_sensor", "anchor_threshold",
                             "boost_threshold"}
     assert (set(POSITIVE), set(UNIT)) == ({"sigma", "sigma_loc", "w_loc", "w_sensor", "eta"}, {"w_slot"})

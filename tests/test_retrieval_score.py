@@ -50,6 +50,9 @@ def make_index():
     slot_inst = np.full((n, m), -1, np.int32)
     for i, row in enumerate(SLOTS):
         slot_inst[i, : len(row)] = row
+    # Node i is exploration record 10 * i; the key poses saw each instance once, so first == last.
+    first = np.array([10.0 * next(i for i, row in enumerate(SLOTS) if c in row) for c in range(I)])
+    last = first
     node_emb = np.stack([unit(sum(inst_emb[c, 0] for c in row)) for row in SLOTS])
     pos = np.stack([np.array([1.5 * i, 0.0, 0.0]) for i in range(n)]).astype(np.float32)
     nbr = np.full((n, 2), -1, np.int32)
@@ -59,15 +62,18 @@ def make_index():
     return RetrievalIndex(
         node_emb=jnp.asarray(node_emb), node_pos=jnp.asarray(pos), node_mask=jnp.ones(n, bool),
         nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), inst_emb=jnp.asarray(inst_emb),
-        inst_phrase_mask=jnp.asarray(inst_pmask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(sensors),
-        inst_sensor_mask=jnp.asarray(smask), inst_mask=jnp.ones(I, bool), slot_inst=jnp.asarray(slot_inst),
+        inst_phrase_mask=jnp.asarray(inst_pmask), inst_name_emb=jnp.asarray(inst_emb),
+        inst_name_mask=jnp.asarray(inst_pmask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(sensors),
+        inst_sensor_mask=jnp.asarray(smask), inst_mask=jnp.ones(I, bool), inst_first=jnp.asarray(first, jnp.float32),
+        inst_last=jnp.asarray(last, jnp.float32), slot_inst=jnp.asarray(slot_inst),
         slot_mask=jnp.asarray(slot_inst >= 0), cluster_emb=jnp.ones((1, 1, D)), cluster_label_emb=jnp.ones((1, 1, D)),
         cluster_mask=jnp.ones((1, 1), bool), cluster_parent=-jnp.ones((1, 1), jnp.int32),
         leaf_cluster=jnp.zeros((n, 1), jnp.int32),
     )
 
 
-def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0, room=None, near=True):
+def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scale=3.0, room=None, near=True,
+          time_order=0, time_rank=1):
     z = np.zeros(D, np.float32)
     return QueryArrays(
         target=jnp.asarray(target), head=jnp.asarray(head if head is not None else target),
@@ -76,7 +82,7 @@ def query(target, head=None, anchor=None, hint=None, op=OP_NONE, value=0.0, scal
         room=jnp.asarray(room if room is not None else z), has_room=jnp.asarray(room is not None),
         hint=jnp.asarray(hint if hint is not None else [0.0, 0.0], jnp.float32), has_hint=jnp.asarray(hint is not None),
         sensor_channel=jnp.int32(0), sensor_op=jnp.int32(op), sensor_value=jnp.float32(value),
-        sensor_scale=jnp.float32(scale),
+        sensor_scale=jnp.float32(scale), time_order=jnp.int32(time_order), time_rank=jnp.int32(time_rank),
     )
 
 

@@ -20,11 +20,12 @@ import numpy as np
 from ragnav_jax.config import Config
 from ragnav_jax.evaluation.grounding import MemoryGrounder, RelationWords, SensorReading, TaggedReading
 from ragnav_jax.evaluation.methods import MethodSpec
-from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
+from ragnav_jax.evaluation.verify import Verifier, recorded, vocabulary
 from ragnav_jax.language.episodes import Episode
 from ragnav_jax.language.sensor_reader import load_reader
 from ragnav_jax.language.tagger import ADD_CONF, load_tagger
 from ragnav_jax.language.types import Subgoal
+from ragnav_jax.memory.names import name_classes
 from ragnav_jax.memory.types import MemoryBank
 from ragnav_jax.pytrees import take
 from ragnav_jax.retrieval import kernels as K

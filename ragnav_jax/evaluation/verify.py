@@ -61,6 +61,7 @@ from ragnav_jax.language.episodes import relation_holds, sensor_holds
 from ragnav_jax.language.lexicon import GENERIC_HEADS, SAME_STATES
 from ragnav_jax.language.types import Subgoal, Target
 from ragnav_jax.memory.captioner import CaptionNoise, canonical, describe_object, find_words
+from ragnav_jax.memory.names import alias_sets, name_classes
 from ragnav_jax.world.scene import Scene, SceneObject
 
 FITTED_PATH = Path(__file__).resolve().parent.parent / "data" / "fitted.json"
@@ -268,9 +269,10 @@ class Verifier:
 
     # -- the verdict table
     def scene_view(self, scene: Scene, known: Sequence[int], recorded_names: dict[int, Sequence[str]],
-                   memory_scene: Scene | None = None) -> SceneView:
+                   memory_scene: Scene | None = None, seen: Sequence[tuple[int, int]] = ()) -> SceneView:
         """What the robot's memory holds of a scene: recorded objects, their names, each room's names and type
-        (the rooms of `memory_scene`, the scene as the memory saw it, where the world changed since)."""
+        (the rooms of `memory_scene`, the scene as the memory saw it, where the world changed since), and when it
+        saw each object (seen: (O,) (first, last) records, for time-indexed goals)."""
         room = [o.room for o in (memory_scene or scene).objects]
         vocab = vocabulary(recorded_names)
         classes, frequent = name_classes(recorded_names)
@@ -284,7 +286,7 @@ class Verifier:
                   for r in by_room}
         types = {r: _summariser().infer_type(counts[r], 2)[0] for r, ns in by_room.items() if ns}
         return SceneView(scene, tuple(sorted(set(known))), tuple(vocab), {r: tuple(ns) for r, ns in by_room.items()},
-                         types, aliases, classes)
+                         types, aliases, classes, tuple(map(tuple, seen)))
 
     def perceptions_of(self, scene: Scene, key: str) -> list[tuple[Perceived, ...]]:
         """`looks` close-range perceptions of every scene object (the look-around on arrival sees it from
@@ -382,7 +384,24 @@ class Verifier:
                     v = objs[i].readings[c.reading]
                     keep[i] = v == (max(vals) if c.comparator == "max" else min(vals)) if vals else True
                 ok &= keep
+        if rank and sg.time is not None:  # "the mug you saw first": its place among the recorded ones passing too
+            ok &= self._at_time(view, sg, ok)
         return ok
+
+    @staticmethod
+    def _at_time(view: SceneView, sg: Subgoal, ok: np.ndarray) -> np.ndarray:
+        """(O,) bool: of the objects ok, those at sg.time's place (rank-th first or last seen by the memory's
+        sighting log) among the recorded objects that pass the same checks, in the same room when sg names one.
+        An object the memory never saw has no place."""
+        objs = view.scene.objects
+        when = {i: (t[0] if sg.time.order == "first" else -t[1]) for i, t in enumerate(view.seen) if t[0] >= 0}
+        rivals = [i for i in view.known if ok[i] and i in when]
+        keep = np.zeros(len(objs), bool)
+        for i in np.flatnonzero(ok):
+            if i in when:
+                same = [j for j in rivals if sg.room is None or objs[j].room == objs[i].room]
+                keep[i] = sum(when[j] < when[i] for j in same) == sg.time.rank - 1
+        return keep
 
     def relations_hold(self, t: Target, view: SceneView, ps: Sequence[Sequence[Perceived]]) -> np.ndarray:
         """(O,) bool: t's relations hold for each scene object against anchors the memory recorded that fit
@@ -418,44 +437,6 @@ class Verifier:
         return any(all(self.contradicted(a, p) for p, f in zip(ps, fit) if f) for a in sg.target.attributes)
 
 
-def name_classes(recorded_names: dict[int, Sequence[str]], share: float = 0.15) -> tuple[dict, dict]:
-    """Names that mean the same thing, learnt from the memory: (name -> frozenset of its aliases, object ->
-    its frequent names). Names said at least twice and for at least `share` of one instance's views are
-    aliases ('houseplant' and 'potted plant'). A name said rarely joins nothing, but where no object goes
-    by it frequently it means what the objects it was said of go by ('cot', said once of a crib, means
-    the cribs); a rare confusion with a name other objects go by ('chair' for an armchair once) means
-    only itself."""
-    parent: dict[str, str] = {}
-
-    def find(x: str) -> str:
-        while parent.setdefault(x, x) != x:
-            x = parent[x]
-        return x
-
-    frequent = {}
-    for i, ns in recorded_names.items():
-        cnt = Counter(n.lower() for n in ns)
-        frequent[i] = [x for x, k in cnt.items() if k >= 2 and k >= share * len(ns)] or list(cnt)
-        for x in frequent[i]:
-            parent[find(x)] = find(frequent[i][0])
-    groups: dict[str, set[str]] = {}
-    for x in list(parent):
-        groups.setdefault(find(x), set()).add(x)
-    out = {x: frozenset(groups[find(x)]) for x in parent}
-    rare: dict[str, set[str]] = {}
-    for i, ns in recorded_names.items():
-        for x in {n.lower() for n in ns} - set(frequent[i]) - set(parent):
-            rare.setdefault(x, {x}).update(out[frequent[i][0]])
-    return {**out, **{x: frozenset(ys) for x, ys in rare.items()}}, frequent
-
-
-def alias_sets(recorded_names: dict[int, Sequence[str]], classes: dict, frequent: dict) -> dict[int, tuple[str, ...]]:
-    """Every name an object goes by: its recorded names and the aliases of its frequent ones (classes,
-    frequent: `name_classes(recorded_names)`)."""
-    return {i: tuple(sorted({n.lower() for n in ns} | {y for x in frequent[i] for y in classes[x]}))
-            for i, ns in recorded_names.items()}
-
-
 @dataclasses.dataclass(frozen=True)
 class SceneView:
     scene: Scene
@@ -465,6 +446,7 @@ class SceneView:
     room_type: dict  # room id -> the type the forest's summariser infers from them (rooms with names only)
     aliases: dict  # object index -> every name the memory recorded for it (lower case)
     classes: dict = dataclasses.field(default_factory=dict)  # name -> the names the memory learnt mean the same
+    seen: tuple = ()  # (O,) (first, last) exploration record the memory saw each object, (-1, -1) never
 
     def names_of(self, i: int, looks: Sequence[Perceived]) -> set[str]:
         """Every name object i goes by: what its memory recorded and the learnt aliases of what it is called
@@ -492,6 +474,18 @@ def recorded(meta, scene: Scene) -> tuple[dict[int, list[str]], dict[str, str]]:
     return names, name_of
 
 
+def _node_times(obs: np.ndarray, mask: np.ndarray, record: np.ndarray, n_objects: int) -> tuple:
+    """(O,) (first, last) records of the key poses that observed each object ((-1, -1) none): the sighting log of
+    a bank built before memories kept one. obs: (N, K) observed objects; mask: (N,); record: (N,)."""
+    out = [[-1, -1] for _ in range(n_objects)]
+    for i in np.flatnonzero(mask):
+        for o in obs[i][obs[i] >= 0]:
+            t = out[int(o)]
+            t[0] = int(record[i]) if t[0] < 0 else min(t[0], int(record[i]))
+            t[1] = max(t[1], int(record[i]))
+    return tuple(map(tuple, out))
+
+
 def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene], memory_scenes: Sequence[Scene] | None = None
                  ) -> dict[str, SceneView]:
     """Scene name -> what its memory holds (`Verifier.scene_view`), for the bank's scenes among `scenes`; kept on
@@ -506,13 +500,15 @@ def memory_views(verifier: Verifier, bank, scenes: Sequence[Scene], memory_scene
     before = {s.name: s for s in memory_scenes}
     obs = np.asarray(bank.memory.obs_object)
     mask = np.asarray(bank.memory.node_mask)
+    rec = np.asarray(bank.memory.record)
     views = {}
     for b, meta in enumerate(bank.metas):
         if meta.scene in by_name:
             scene = by_name[meta.scene]
             known = sorted({int(x) for x in obs[b][mask[b]].ravel() if x >= 0})
             old = before.get(meta.scene, scene)
-            views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, old)[0], old)
+            seen = meta.object_seen or _node_times(obs[b], mask[b], rec[b], len(old.objects))
+            views[meta.scene] = verifier.scene_view(scene, known, recorded(meta, old)[0], old, seen)
     verifier._views[key] = (bank, (*scenes, *memory_scenes), views)
     return views
 

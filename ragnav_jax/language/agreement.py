@@ -41,6 +41,8 @@ def subgoal_differences(p: Subgoal, t: Subgoal) -> list[str]:
     ts = [(c.reading, c.comparator, c.unit) for c in t.sensors]
     if ps != ts or not all(_close(a.value, b.value) for a, b in zip(p.sensors, t.sensors)):
         out.append(f"sensors {[c.to_dict() for c in p.sensors]} != {[c.to_dict() for c in t.sensors]}")
+    if p.time != t.time:
+        out.append(f"time {p.time} != {t.time}")
     return out
 
 

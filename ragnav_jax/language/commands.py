@@ -67,6 +67,23 @@ def _tagged(chain, cfg):
     return dataclasses.replace(chain, subgoals=subgoals, dependencies=derive_dependencies(subgoals, chain.order))
 
 
+def _time_episodes(run: Path, scenes, cfg) -> list:
+    """Time-indexed episodes of an explored run (language/time_episodes.py)."""
+    from ragnav_jax.language.episodes import SceneFacts
+    from ragnav_jax.language.time_episodes import generate_time_episodes
+    from ragnav_jax.sim.stream import ExplorationStream
+
+    streams = {}
+    for s in scenes:
+        path = run / "explore" / "streams" / f"{s.name}.npz"
+        if not path.is_file():
+            raise UserError(f"{path}: no exploration stream for scene '{s.name}' (run ragnav explore first)")
+        streams[s.name] = ExplorationStream.load(path)
+    e = cfg.episodes
+    return generate_time_episodes(scenes, streams, lambda s: SceneFacts.build(s, e), e.time_per_scene, e.time_gap,
+                                  e.time_phrasing, cfg.seed)
+
+
 def cmd_episodes(args, cfg) -> int:
     from ragnav_jax.language.agreement import parse_agreement
     from ragnav_jax.language.episodes import (
@@ -90,13 +107,20 @@ def cmd_episodes(args, cfg) -> int:
         raise UserError("--out FILE is needed when --scenes is not a run folder (RUN or RUN/scenes)")
     if out.suffix != ".jsonl":
         raise UserError(f"--out {out}: use a .jsonl file name")
+    if args.time_indexed and run is None:
+        raise UserError(f"--time-indexed: {args.scenes} is not a run folder (it reads RUN/explore/streams)")
+    if args.time_indexed and not args.out:
+        out = run / "episodes" / "time.jsonl"
     truth_path, summary_path = out.with_name(out.stem + ".chains.jsonl"), out.with_name(out.stem + "_summary")
     report_path = out.with_name(out.stem + ".agreement.json")
     refuse_overwrite([out, truth_path, summary_path.with_suffix(".md"), summary_path.with_suffix(".csv"), report_path],
                      args.force)
     if run is not None:
-        init_run(run, cfg, "episodes")
-    pairs = generate_episodes(scenes, cfg.episodes, cfg.seed, progress=not args.quiet)
+        init_run(run, cfg, "episodes-time" if args.time_indexed else "episodes")
+    if args.time_indexed:
+        pairs = _time_episodes(run, scenes, cfg)
+    else:
+        pairs = generate_episodes(scenes, cfg.episodes, cfg.seed, progress=not args.quiet)
     if not pairs:
         raise UserError(f"{src}: no episodes could be generated (scenes without describable objects?)")
     for k, p in enumerate(pairs, start=1):  # the schema promise, checked before writing
@@ -213,6 +237,9 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     p.add_argument("--scenes", required=True, help="scene folder or file, or a run folder from `ragnav generate`")
     p.add_argument("--out", help="episodes .jsonl file (default: RUN/episodes/episodes.jsonl for a run folder)")
     p.add_argument("--force", action="store_true", help="overwrite an existing episodes file")
+    p.add_argument("--time-indexed", action="store_true",
+                   help="time-indexed queries ('the mug you saw first') from an explored run's streams "
+                        "(default --out RUN/episodes/time.jsonl; episodes.time_per_scene, time_gap, time_phrasing)")
     p.set_defaults(func=cmd_episodes)
 
     p = sub.add_parser("check-parse", parents=[common], help="parse agreement with ground-truth chains")

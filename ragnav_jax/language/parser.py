@@ -46,6 +46,7 @@ import unicodedata
 
 from ragnav_jax.language import lexicon as L
 from ragnav_jax.language.readings import UNIT_CODES, UNIT_READING, to_canonical
+from ragnav_jax.language.time_words import cut_times
 from ragnav_jax.language.types import (
     Location,
     ParseError,
@@ -54,6 +55,7 @@ from ragnav_jax.language.types import (
     Subgoal,
     Target,
     TaskChain,
+    TimeConstraint,
     derive_dependencies,
 )
 
@@ -875,13 +877,17 @@ class _Marks:
     locations: dict[str, Location] = dataclasses.field(default_factory=dict)
     sensors: dict[str, tuple[SensorConstraint, ...]] = dataclasses.field(default_factory=dict)
     text: dict[str, str] = dataclasses.field(default_factory=dict)
+    times: dict[str, TimeConstraint] = dataclasses.field(default_factory=dict)
 
     def add(self, original: str, location: Location | None = None,
-            sensor: SensorConstraint | tuple[SensorConstraint, ...] | None = None) -> str:
+            sensor: SensorConstraint | tuple[SensorConstraint, ...] | None = None,
+            time: TimeConstraint | None = None) -> str:
         k = _key(len(self.text))
         self.text[k] = original.strip()
         if location is not None:
             self.locations[k] = location
+        if time is not None:
+            self.times[k] = time
         if sensor is not None:
             self.sensors[k] = sensor if isinstance(sensor, tuple) else (sensor,)
         return f" {k} "
@@ -935,6 +941,7 @@ def _cut(s: str, marks: _Marks) -> str:
         what = f"the coordinates '{m.group(0).strip()}'"
         return marks.add(m.group(0), location=Location(_to_float(x, what), _to_float(y, what)))
 
+    s = cut_times(s, lambda original, t: marks.add(original, time=t))
     s = _LOC1.sub(loc, s)
     s = _LOC2.sub(loc, s)
 
@@ -1077,6 +1084,7 @@ class _Piece:
     clause: _Node | None = None  # the noun the segment's last relative clause describes ("the bin that is full")
     pair: bool = False  # "both boilers": two goals of that description
     into: bool = False  # "head into the flour store and ...": a place the robot enters
+    time: TimeConstraint | None = None  # "the mug you saw first" (time_words.py)
 
     @property
     def empty(self) -> bool:
@@ -1504,6 +1512,8 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
                 piece.locations.append(marks.locations[t])
             if t in marks.sensors:
                 piece.sensors.extend(marks.sensors[t])
+            if t in marks.times:
+                piece.time = marks.times[t]
         else:
             tokens.append(t)
     if _sequencing_clause(tokens, raw):
@@ -1972,6 +1982,7 @@ def parse_instruction(text: str) -> TaskChain:
                 location=g.locations[0] if g.locations else None,
                 sensors=tuple(g.sensors),
                 text=" ".join(t for t in g.texts if t),
+                time=g.time,
             )
         )
     subgoals_t = tuple(subgoals)
@@ -2042,6 +2053,7 @@ def _merge(into: _Piece, extra: _Piece, prefix: bool = False) -> _Piece:
     into.room = into.room or extra.room
     into.locations += extra.locations
     into.sensors += extra.sensors
+    into.time = into.time or extra.time
     into.relations += extra.relations
     if extra.attrs_only:
         if into.node is not None:

@@ -160,12 +160,37 @@ class SensorConstraint:
         return cls(str(d["reading"]), str(d["comparator"]), None if v is None else float(v), str(d.get("unit", "")))
 
 
+TIME_ORDERS = ("first", "last")
+MAX_TIME_RANK = 9
+
+
+@dataclasses.dataclass(frozen=True)
+class TimeConstraint:
+    """When the robot saw the target, among the objects of its kind (a time-indexed query).
+
+    order "first", rank 1: the one it saw earliest ("the mug I saw first", "where the chair was before it moved");
+    rank 2: the second it came across. order "last", rank 1: the one it saw most recently; rank 2: the one
+    before that. Retrieval ranks the matching instances by the memory's timestamps (`kernels.time_term`).
+    """
+
+    order: str
+    rank: int = 1
+
+    def to_dict(self) -> dict:
+        return {"order": self.order, "rank": self.rank}
+
+    @classmethod
+    def from_dict(cls, d: dict) -> TimeConstraint:
+        return cls(str(d["order"]), int(d.get("rank", 1)))
+
+
 @dataclasses.dataclass(frozen=True)
 class Subgoal:
     """One goal of the chain: what to reach and every constraint the instruction puts on it.
 
     index: position in the instruction (0-based). text: the span of the instruction it came from.
     room: a room constraint as written ("kitchen", "living room"), or None.
+    time: when the robot saw it (TimeConstraint), or None; `to_dict` writes the key only when set.
     """
 
     index: int
@@ -174,9 +199,10 @@ class Subgoal:
     location: Location | None = None
     sensors: tuple[SensorConstraint, ...] = ()
     text: str = ""
+    time: TimeConstraint | None = None
 
     def to_dict(self) -> dict:
-        return {
+        d = {
             "index": self.index,
             "text": self.text,
             "target": self.target.to_dict(),
@@ -184,6 +210,9 @@ class Subgoal:
             "location": None if self.location is None else self.location.to_dict(),
             "sensors": [s.to_dict() for s in self.sensors],
         }
+        if self.time is not None:
+            d["time"] = self.time.to_dict()
+        return d
 
     @classmethod
     def from_dict(cls, d: dict) -> Subgoal:
@@ -195,6 +224,7 @@ class Subgoal:
             location=None if loc is None else Location.from_dict(loc),
             sensors=tuple(SensorConstraint.from_dict(s) for s in d.get("sensors", ())),
             text=str(d.get("text", "")),
+            time=None if d.get("time") is None else TimeConstraint.from_dict(d["time"]),
         )
 
 
@@ -387,7 +417,15 @@ TASKCHAIN_SCHEMA: dict[str, Any] = {
                 "room": {"type": ["string", "null"]},
                 "location": {"anyOf": [{"$ref": "#/$defs/location"}, {"type": "null"}]},
                 "sensors": {"type": "array", "items": {"$ref": "#/$defs/sensor"}},
+                "time": {"anyOf": [{"$ref": "#/$defs/time"}, {"type": "null"}]},
             },
+        },
+        "time": {
+            "type": "object",
+            "required": ["order"],
+            "additionalProperties": False,
+            "properties": {"order": {"enum": list(TIME_ORDERS)},
+                           "rank": {"type": "integer", "minimum": 1, "maximum": MAX_TIME_RANK}},
         },
         "dependency": {
             "type": "object",

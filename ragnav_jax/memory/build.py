@@ -225,6 +225,7 @@ def build_bank(scenes: Sequence[Scene], streams: Sequence[ExplorationStream], cf
             num_components=int(comps[b].max() + 1) if n else 0, embedder=embedder.name, config=to_dict(m),
             caption_objects=tuple(c.objects for c in captions[b]), caption_phrases=tuple(c.phrases for c in captions[b]),
             fingerprint=scene_fingerprint(scene, to_dict(m)),
+            object_seen=tuple(zip(*(map(int, v) for v in streams[b].view_times()))),
         ))
     timings["summaries"] = time.perf_counter() - t0
     bar.update(1)

@@ -78,6 +78,9 @@ class MemoryMeta:
     caption_objects: tuple[tuple[int, ...], ...] = ()  # (n,) scene object index of each described instance
     caption_phrases: tuple[tuple[str, ...], ...] = ()  # (n,) the caption's phrase for each of them
     fingerprint: str = ""  # scene_fingerprint of the scene and `config` it was built from ("" in older banks)
+    # (O,) the first and the last exploration record in which the camera saw each scene object, (-1, -1) never: the
+    # memory's sighting log, which time-indexed queries and recency read (() in older banks: node records instead)
+    object_seen: tuple[tuple[int, int], ...] = ()
 
     def to_json(self) -> dict:
         return dataclasses.asdict(self)
@@ -93,6 +96,7 @@ class MemoryMeta:
             num_components=int(d["num_components"]), embedder=d["embedder"], config=dict(d["config"]),
             caption_objects=tuple(tuple(int(x) for x in v) for v in d.get("caption_objects", ())),
             caption_phrases=tup(d.get("caption_phrases", ())), fingerprint=str(d.get("fingerprint", "")),
+            object_seen=tuple((int(a), int(b)) for a, b in d.get("object_seen", ())),
         )
 
 

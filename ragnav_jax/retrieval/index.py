@@ -15,6 +15,7 @@ from collections.abc import Sequence
 import jax.numpy as jnp
 import numpy as np
 
+from ragnav_jax.memory.names import name_classes
 from ragnav_jax.memory.types import DualBasisMemory, MemoryBank, MemoryMeta
 from ragnav_jax.pytrees import stack, take
 from ragnav_jax.retrieval.score import RetrievalIndex
@@ -93,6 +94,7 @@ def build_scene_index(
     n_inst = int(inst_of.max()) + 1 if len(dets) else 0
     I = max(max_instances or n_inst, n_inst, 1)
     said: list[list[str]] = [[] for _ in range(n_inst)]  # every distinct phrase; the first max_phrases are embedded
+    called: dict[int, list[str]] = {c: [] for c in range(n_inst)}  # the captioner's name of the instance, per view
     inst_obj = [-1] * n_inst
     slot_inst = np.full((n_pad, max_slots), -1, np.int32)
     for (i, j, oi, ph), c in zip(dets, inst_of):
@@ -100,8 +102,15 @@ def build_scene_index(
         inst_obj[c] = oi
         if ph not in said[c]:
             said[c].append(ph)
+        if j < len(meta.caption_labels[i]):
+            called[c].append(meta.caption_labels[i][j])
     inst_phr = [ps[:max_phrases] for ps in said]
-    flat = sorted({p for ps in inst_phr for p in ps})
+    # What the memory mostly calls each instance, with the aliases it learnt for those names (memory/names.py, as the
+    # verifier reads them; a name said once in confusion is left out): time-indexed queries rank among the instances
+    # that go by the head noun.
+    classes, frequent = name_classes(called)
+    inst_names = [sorted({y for x in frequent[c] for y in classes[x]})[:max_phrases] for c in range(n_inst)]
+    flat = sorted({p for ps in inst_phr + inst_names for p in ps})
     vec = dict(zip(flat, embedder.embed(flat))) if flat else {}
     inst_emb = np.zeros((I, max_phrases, D), np.float32)
     inst_pmask = np.zeros((I, max_phrases), bool)
@@ -109,6 +118,22 @@ def build_scene_index(
     inst_sens = np.zeros((I, S), np.float32)
     inst_smask = np.zeros((I, S), bool)
     inst_mask = np.zeros((I,), bool)
+    name_emb = np.zeros((I, max_phrases, D), np.float32)
+    name_mask = np.zeros((I, max_phrases), bool)
+    for c, names in enumerate(inst_names):
+        for k, x in enumerate(names):
+            name_emb[c, k], name_mask[c, k] = vec[x], True
+    # When each instance was seen: the records of the first and the latest node that described it, widened by the
+    # memory's sighting log (MemoryMeta.object_seen) where it has the object (every view, not only key poses).
+    det_rec = np.asarray(mem.record).astype(np.float32)[[i for i, _, _, _ in dets]]
+    inst_first, inst_last = np.full((I,), np.inf, np.float32), np.full((I,), -np.inf, np.float32)
+    np.minimum.at(inst_first, inst_of[: len(dets)], det_rec)
+    np.maximum.at(inst_last, inst_of[: len(dets)], det_rec)
+    inst_first[n_inst:], inst_last[n_inst:] = 0.0, 0.0
+    for c in range(n_inst):
+        if inst_obj[c] < len(meta.object_seen) and meta.object_seen[inst_obj[c]][0] >= 0:
+            first, last = meta.object_seen[inst_obj[c]]
+            inst_first[c], inst_last[c] = min(inst_first[c], first), max(inst_last[c], last)
     for c in range(n_inst):
         for k, ph in enumerate(inst_phr[c]):
             inst_emb[c, k], inst_pmask[c, k] = vec[ph], True
@@ -154,8 +179,10 @@ def build_scene_index(
     index = RetrievalIndex(
         node_emb=mem.embedding, node_pos=mem.position, node_mask=mem.node_mask & jnp.asarray(slot_mask.any(1)),
         nbr=jnp.asarray(nbr), nbr_mask=jnp.asarray(nbr >= 0), inst_emb=jnp.asarray(inst_emb),
-        inst_phrase_mask=jnp.asarray(inst_pmask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(inst_sens),
-        inst_sensor_mask=jnp.asarray(inst_smask), inst_mask=jnp.asarray(inst_mask), slot_inst=jnp.asarray(slot_inst),
+        inst_phrase_mask=jnp.asarray(inst_pmask), inst_name_emb=jnp.asarray(name_emb),
+        inst_name_mask=jnp.asarray(name_mask), inst_pos=jnp.asarray(inst_pos), inst_sensors=jnp.asarray(inst_sens),
+        inst_sensor_mask=jnp.asarray(inst_smask), inst_mask=jnp.asarray(inst_mask), inst_first=jnp.asarray(inst_first),
+        inst_last=jnp.asarray(inst_last), slot_inst=jnp.asarray(slot_inst),
         slot_mask=jnp.asarray(slot_mask), cluster_emb=jnp.asarray(cluster_emb),
         cluster_label_emb=jnp.asarray(cluster_label), cluster_mask=jnp.asarray(cluster_mask),
         cluster_parent=jnp.asarray(cluster_parent), leaf_cluster=jnp.asarray(leaf_cluster),

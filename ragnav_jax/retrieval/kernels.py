@@ -240,6 +240,33 @@ def sensor_term(
     return jnp.where(op == OP_NONE, 1.0, jnp.where(has, t, missing))
 
 
+TIME_NONE, TIME_FIRST, TIME_LAST = 0, 1, 2
+
+
+def time_term(first: jax.Array, last: jax.Array, pool: jax.Array, order: jax.Array, rank: jax.Array) -> jax.Array:
+    """Soft match of when each of M instances was seen to a time-indexed query ("the second mug you saw").
+
+    first, last: (M,) timestamps (exploration record) of the first and the latest view of each instance;
+    pool: (M,) bool the instances the ranking is among (the target's kind, in its room); order: () int32
+    TIME_*; rank: () int32, 1-based. An instance's rank is the number of pool instances seen strictly earlier
+    (TIME_FIRST, by first view) or strictly later (TIME_LAST, by latest view), so ties share a rank.
+    Returns (M,) exp(-|rank - (rank_wanted - 1)|): 1 at the asked rank, e^-1 one place off; 1 for TIME_NONE.
+    """
+    key = jnp.where(order == TIME_LAST, -last, first)  # smaller is "earlier in the asked direction"
+    before = jnp.sum(pool[None, :] & (key[None, :] < key[:, None]), axis=1)  # (M,)
+    term = jnp.exp(-jnp.abs(before - (rank - 1)).astype(jnp.float32))
+    return jnp.where(order == TIME_NONE, 1.0, term)
+
+
+def recency_term(last: jax.Array, mask: jax.Array, weight: jax.Array) -> jax.Array:
+    """exp(-weight * age) for M instances: age = (t_latest - last) / (t_latest - t_earliest) in [0, 1] over the
+    masked instances' latest views, so the memory's newest entries keep full score. (M,); 1 at weight 0."""
+    hi = jnp.max(jnp.where(mask, last, -jnp.inf))
+    lo = jnp.min(jnp.where(mask, last, jnp.inf))
+    age = jnp.where(mask, (hi - last) / jnp.maximum(hi - lo, 1.0), 0.0)
+    return jnp.exp(-weight * age)
+
+
 def beam_prune(
     q: jax.Array,
     cluster_emb: jax.Array,

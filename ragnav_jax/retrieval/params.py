@@ -29,6 +29,8 @@ class RetrievalParams:
     sigma_rel: jnp.ndarray  # metres, width of the instance-level "A near B" Gaussian (anchor_proximity)
     w_loc: jnp.ndarray  # exponent of the location term (0 ignores hints)
     w_sensor: jnp.ndarray  # exponent of the sensor term (0 ignores sensor constraints)
+    w_time: jnp.ndarray  # exponent of the time term of time-indexed queries (0 ignores "the one you saw first")
+    w_recency: jnp.ndarray  # recency weight: instances seen longer ago score exp(-w_recency * age), age in [0, 1]
     w_room: jnp.ndarray  # 1: soft room constraint from the forest's summary labels; 0: off
     tau_room: jnp.ndarray  # softness of the room term (similarity units)
     forest_lock: jnp.ndarray  # 1: a room phrase prunes leaves outside the beam's region (paper); 0: soft room term only

@@ -14,8 +14,19 @@ from flax import struct
 
 from ragnav_jax.language.readings import READINGS
 from ragnav_jax.language.types import Subgoal
-from ragnav_jax.retrieval.kernels import OP_APPROX, OP_GT, OP_LT, OP_MAX, OP_MIN, OP_NONE
+from ragnav_jax.retrieval.kernels import (
+    OP_APPROX,
+    OP_GT,
+    OP_LT,
+    OP_MAX,
+    OP_MIN,
+    OP_NONE,
+    TIME_FIRST,
+    TIME_LAST,
+    TIME_NONE,
+)
 
+TIME_ORDERS = {"first": TIME_FIRST, "last": TIME_LAST}
 COMPARATOR_OPS = {"gt": OP_GT, "ge": OP_GT, "lt": OP_LT, "le": OP_LT, "approx": OP_APPROX, "max": OP_MAX, "min": OP_MIN}
 # The natural softness of each reading: a sigmoid/Gaussian of width one unit of this.
 SENSOR_SCALES = {k: r.tolerance for k, r in READINGS.items()}
@@ -38,6 +49,8 @@ class QueryArrays:
     sensor_op: jnp.ndarray  # () int32 OP_* (OP_NONE when none)
     sensor_value: jnp.ndarray  # () float32 threshold / target (0 for superlatives)
     sensor_scale: jnp.ndarray  # () float32 softness in the reading's unit
+    time_order: jnp.ndarray  # () int32 kernels.TIME_* ("the mug you saw first": TIME_FIRST; TIME_NONE when none)
+    time_rank: jnp.ndarray  # () int32 1-based rank in that order (1 when none)
 
 
 def query_texts(sg: Subgoal) -> tuple[str, str, str, str]:
@@ -79,6 +92,8 @@ def encode_subgoals(subgoals: Sequence[Subgoal], embedder, sensor_names: Sequenc
                 hint=np.array([sg.location.x, sg.location.y] if sg.location else [0.0, 0.0], np.float32),
                 has_hint=sg.location is not None, sensor_channel=np.int32(ch), sensor_op=np.int32(op),
                 sensor_value=np.float32(val), sensor_scale=np.float32(scale),
+                time_order=np.int32(TIME_ORDERS[sg.time.order] if sg.time else TIME_NONE),
+                time_rank=np.int32(sg.time.rank if sg.time else 1),
             )
         )
     if not rows:

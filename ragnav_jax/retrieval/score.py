@@ -48,10 +48,15 @@ class RetrievalIndex:
     nbr_mask: jnp.ndarray  # (N, Dmax) bool
     inst_emb: jnp.ndarray  # (I, P, D) unit embeddings of the phrases describing each instance (all views)
     inst_phrase_mask: jnp.ndarray  # (I, P) bool
+    inst_name_emb: jnp.ndarray  # (I, P, D) unit embeddings of every name the instance goes by (captioner's names and
+    # the aliases the memory learnt for them: memory/names.py)
+    inst_name_mask: jnp.ndarray  # (I, P) bool
     inst_pos: jnp.ndarray  # (I, 3) estimated instance positions
     inst_sensors: jnp.ndarray  # (I, S) readings of each instance
     inst_sensor_mask: jnp.ndarray  # (I, S) bool
     inst_mask: jnp.ndarray  # (I,) bool
+    inst_first: jnp.ndarray  # (I,) float32 exploration record of the instance's first view (a node that described it)
+    inst_last: jnp.ndarray  # (I,) float32 ... and of its latest view (recency and "the one you saw last")
     slot_inst: jnp.ndarray  # (N, M) int32 instance described by a node's caption, -1 padding
     slot_mask: jnp.ndarray  # (N, M) bool: instance described at this node
     cluster_emb: jnp.ndarray  # (L, C, D) forest cluster embeddings, level 0 finest
@@ -62,6 +67,7 @@ class RetrievalIndex:
 
 
 CATEGORY_MARGIN = 0.1  # head-noun similarity below the scene's best match that still counts as the category
+SAME_NAME = 0.999  # cosine of a name's embedding with itself, up to float32 rounding
 
 
 def _unit(q: jax.Array) -> jax.Array:
@@ -107,16 +113,34 @@ def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     likely = match & (head >= top_head - CATEGORY_MARGIN)
     holds = jnp.any(likely[si] & idx.slot_mask, axis=1) & idx.node_mask  # (N,) saw a likely target instance
     room = room_term(idx, q, p, holds)  # (N,)
+    # Time-indexed queries rank the likely instances in the asked room (the best-matching region) by when they
+    # were seen; an instance's room is its best-placed describing node's.
+    inst_room = jax.ops.segment_max(jnp.where(idx.slot_mask, room[:, None], 0.0).ravel(), si.ravel(),
+                                    num_segments=head.shape[0])
+    when = K.time_term(idx.inst_first, idx.inst_last, kind_of(idx, qs[1]) & (inst_room >= 0.5), q.time_order,
+                       q.time_rank)
+    fresh = K.recency_term(idx.inst_last, idx.inst_mask, p.w_recency)  # (I,)
     prox = anchor_proximity(idx, q, p, anc)  # (I,)
     # Relative to the best-placed instance of the target's category, so the term chooses among them and
     # never lowers a unique target ("in the same room as" anchors can be metres away).
     near = jnp.minimum(prox / jnp.maximum(jnp.max(jnp.where(likely, prox, 0.0)), 1e-6), 1.0)
     near = jnp.where(jnp.any(likely), near, 1.0)[si]  # (N, M)
     base = (1.0 - p.w_slot) * node_sem[:, None] + p.w_slot * slot_sim
-    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None] * near
+    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None] * near * _pow(when[si], p.w_time) * fresh[si]
     inst = jnp.where(idx.slot_mask & idx.node_mask[:, None], inst, K.NEG)
     return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens, anchor_sim=anchor_sim, room=room,
-                      category=match[si], holds=holds)
+                      category=match[si], holds=holds, time=when[si])
+
+
+def kind_of(idx: RetrievalIndex, head: jax.Array) -> jax.Array:
+    """(I,) bool: the instances that go by the head noun (unit (D,)): where some instance's names hold it (cosine 1
+    up to rounding: the house's own word, or an alias the memory learnt), those; otherwise the instances whose
+    best name is within CATEGORY_MARGIN of the best-named one. The verifier's name rule, on embeddings
+    (evaluation/verify.py: Verifier.names_match)."""
+    sims = jnp.max(jnp.where(idx.inst_name_mask, idx.inst_name_emb @ head, -1.0), axis=-1)  # (I,)
+    sims = jnp.where(idx.inst_mask, sims, -1.0)
+    exact = sims >= SAME_NAME
+    return jnp.where(jnp.any(exact), exact, sims >= jnp.max(sims) - CATEGORY_MARGIN) & idx.inst_mask
 
 
 def anchor_proximity(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, anc: jax.Array) -> jax.Array:

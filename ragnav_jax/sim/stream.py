@@ -40,6 +40,14 @@ class ExplorationStream:
         assert self.distance.shape == (T, O) and self.bearing.shape == (T, O) and len(self.object_ids) == O
         assert self.lidar.shape[0] == T and self.lidar.shape[1] == self.lidar_angles.shape[0]
 
+    def view_times(self) -> tuple[np.ndarray, np.ndarray]:
+        """(first, last) (O,) int64: the first and the last record in which each object was seen, -1 where never."""
+        vis = np.asarray(self.visible, bool)
+        seen = vis.any(0)
+        first = np.where(seen, vis.argmax(0), -1)
+        last = np.where(seen, vis.shape[0] - 1 - vis[::-1].argmax(0), -1)
+        return first, last
+
     def save(self, path: str | Path) -> Path:
         from ragnav_jax.io import atomic_open
 

@@ -226,7 +226,8 @@ def loop_episodes(cfg: Config, bank, scenes: Sequence, episodes: Sequence, embed
     from ragnav_jax.evaluation.metrics import oracle_lengths
     from ragnav_jax.evaluation.navigate import prepare_episodes
     from ragnav_jax.evaluation.ranking import CANDIDATE_DEPTH, grounder, ruled_out
-    from ragnav_jax.evaluation.verify import Verifier, name_classes, recorded, vocabulary
+    from ragnav_jax.evaluation.verify import Verifier, recorded, vocabulary
+    from ragnav_jax.memory.names import name_classes
     from ragnav_jax.retrieval.evaluate import prepare_batch
 
     spec = method_spec("ragnav")

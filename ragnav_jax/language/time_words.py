@@ -1,0 +1,112 @@
+"""Time-indexed goals in an instruction: "the mug you saw first", "the second lamp we passed", "where the chair
+was before it moved", "the chair you spotted most recently".
+
+The rule parser cuts these phrases out of the normalised (lower-case) text before it splits goals, as it cuts
+sensor phrases, and the goal whose segment holds the mark gets the TimeConstraint. An ordinal or recency word
+counts only when a perception verb or participle ties it to seeing ("you saw first", "the first ... you
+spotted", "seen last"); without one it stays an order word ("first the mug, then the lamp").
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from ragnav_jax.language.types import TimeConstraint
+
+_SEP = r"[\s-]+"
+# ordinal or recency word -> (order, rank); multi-word forms are written with single spaces
+ORDINALS: dict[str, tuple[str, int]] = {
+    "first": ("first", 1), "1st": ("first", 1), "earliest": ("first", 1), "very first": ("first", 1),
+    "second": ("first", 2), "2nd": ("first", 2), "third": ("first", 3), "3rd": ("first", 3),
+    "fourth": ("first", 4), "4th": ("first", 4), "fifth": ("first", 5), "5th": ("first", 5),
+    "last": ("last", 1), "latest": ("last", 1), "most recent": ("last", 1), "most recently": ("last", 1),
+    "final": ("last", 1), "very last": ("last", 1), "lately": ("last", 1),
+    "second to last": ("last", 2), "next to last": ("last", 2), "last but one": ("last", 2),
+    "penultimate": ("last", 2), "penultimately": ("last", 2), "second last": ("last", 2),
+    "second most recent": ("last", 2), "second most recently": ("last", 2), "one before last": ("last", 2),
+    "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3),
+    "third most recent": ("last", 3), "third most recently": ("last", 3), "antepenultimate": ("last", 3),
+}
+# forms that only work as adverbs after the verb, not before the noun, and vice versa
+_ADJ_ONLY = ("final", "very first", "very last")
+_ADV_ONLY = ("most recently", "second most recently", "third most recently", "penultimately", "lately",
+             "one before last")
+
+
+def _alt(words) -> str:
+    return "|".join(w.replace(" ", _SEP) for w in sorted(words, key=len, reverse=True))
+
+
+_ORD_ADV = _alt(k for k in ORDINALS if k not in _ADJ_ONLY)
+_ORD_ADJ = _alt(k for k in ORDINALS if k not in _ADV_ONLY)
+_SUBJ = r"(?:i|you|we|u|the\s+robot|it)(?:'ve|'d|\s+have|\s+had)?"
+# perception verbs in the past (a present "you see first" is an order of work, not a memory)
+_VERB = ("saw|seen|spotted|spied|noticed|passed|came\\s+across|come\\s+across|found|encountered|observed|met|clocked|"
+         "glimpsed|sighted|caught\\s+sight\\s+of|ran\\s+into|laid\\s+eyes\\s+on|set\\s+eyes\\s+on|walked\\s+(?:past|by)|"
+         "went\\s+(?:past|by)|drove\\s+(?:past|by)|rolled\\s+(?:past|by)|recorded|logged|detected|mapped|viewed|"
+         "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)")
+_PARTICIPLE = ("seen|spotted|noticed|observed|sighted|encountered|glimpsed|recorded|logged|detected|viewed|"
+               "discovered|registered|found|passed|mapped")
+_TRAIL = (r"(?:\s+(?:it|one|them))?(?:\s+of\s+all)?"
+          r"(?:\s+(?:during|on|in|while|when|as)\s+(?:the|your|our|its|my|you\s+were|we\s+were)?\s*"
+          r"(?:exploration|exploring|explored|tour|walk|walkthrough|walk-through|patrol|sweep|survey|run|round|"
+          r"first\s+pass|scouting(?:\s+run)?|look\s+around|mapping(?:\s+run)?)\b)?"
+          r"(?:\s+(?:earlier|before|previously|today|yesterday|this\s+morning|back\s+then))?")
+_WORD = r"(?!(?:is|are|was|were|be|been|being|'s)\b)[^\s,.;:!?()\[\]⟪⟫]+"  # a word of a noun phrase, no copula
+_NP = rf"(?P<np>(?:{_WORD}\s+){{0,5}}?{_WORD})"
+_DET = r"(?P<det>the|your|that|my|our)"
+
+# "the first mug you saw", "the second-to-last lamp that we passed", "the third bookcase seen"
+_PRE = re.compile(rf"\b{_DET}\s+(?P<ord>{_ORD_ADJ})\s+{_NP}\s+(?:(?:that|which)\s+)?"
+                  rf"(?:{_SUBJ}\s+(?:{_VERB})|(?:(?:was|were)\s+)?(?:{_PARTICIPLE}))\b{_TRAIL}")
+# "the first-seen mug", "the most recently spotted lamp"
+_PRE_PART = re.compile(rf"\b{_DET}\s+(?P<ord>{_ORD_ADV}){_SEP}(?:{_PARTICIPLE})\b")
+# "you first saw", "i most recently spotted"
+_ADV_BEFORE = re.compile(rf"(?:\s*,)?\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?P<ord>{_ORD_ADV})\s+(?:{_VERB})\b{_TRAIL}")
+# "you saw first", "we passed most recently", "the robot came across second"
+_ADV_AFTER = re.compile(rf"(?:\s*,)?\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB}){_TRAIL}\s+(?P<ord>{_ORD_ADV})\b"
+                        rf"(?:\s+of\s+all)?{_TRAIL}")
+# "the mug seen first", "the lamp that was spotted most recently"
+_PART_AFTER = re.compile(rf"(?:\s*,)?\s+(?:(?:that|which)\s+(?:was|were)\s+)?(?:{_PARTICIPLE})\s+(?P<ord>{_ORD_ADV})\b"
+                         rf"{_TRAIL}")
+# "where the chair was before it moved", "the place where the vase stood originally"
+_BEFORE_MOVE = re.compile(
+    rf"\b(?:(?:the|to\s+the)\s+(?:spot|place|position|location)\s+)?where\s+{_DET}\s+{_NP}\s+"
+    r"(?:was|were|stood|sat|used\s+to\s+(?:be|stand|sit))\s+"
+    r"(?:before\s+(?:it|they)\s+(?:was\s+|were\s+|got\s+)?moved|originally|at\s+(?:the\s+)?(?:start|beginning|outset)|"
+    r"at\s+first|in\s+the\s+beginning)\b")
+# "the chair's old spot", "the vase's original position"
+_OLD_SPOT = re.compile(rf"\b{_DET}\s+{_NP}'s\s+(?:old|original|previous|former|first|earlier)\s+"
+                       r"(?:spot|place|position|location)\b")
+# "where you last saw the chair", "the spot where we first spotted the mug"
+_WHERE_SEEN = re.compile(
+    rf"\b(?:(?:the|to\s+the)\s+(?:spot|place|position|location)\s+)?where\s+{_SUBJ}\s+(?P<ord>{_ORD_ADV})\s+"
+    rf"(?:{_VERB})\s+(?P<det>the|a|an|your|that|my|our)\s+{_NP}(?=\s*(?:[,.;:!?]|$|\s+(?:then|and|in|on|near|by|"
+    r"next|beside|before|after|please)\b))")
+
+
+def ordinal(text: str) -> TimeConstraint:
+    """'second-to-last' -> TimeConstraint('last', 2)."""
+    order, rank = ORDINALS[re.sub(_SEP, " ", text.strip())]
+    return TimeConstraint(order, rank)
+
+
+def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
+    """Replaces every time phrase of the normalised text `s` by `mark(original, constraint)` (a placeholder
+    token with spaces around it), keeping the noun phrase it describes in place."""
+
+    def keep_np(order: TimeConstraint | None):
+        def sub(m: re.Match) -> str:
+            t = order or ordinal(m.group("ord"))
+            return f" {m.group('det')} {m.group('np')}{mark(m.group(0), t)}"
+        return sub
+
+    s = _BEFORE_MOVE.sub(keep_np(TimeConstraint("first", 1)), s)
+    s = _OLD_SPOT.sub(keep_np(TimeConstraint("first", 1)), s)
+    s = _WHERE_SEEN.sub(keep_np(None), s)
+    s = _PRE.sub(keep_np(None), s)
+    s = _PRE_PART.sub(lambda m: f" {m.group('det')}{mark(m.group(0), ordinal(m.group('ord')))}", s)
+    for rx in (_ADV_BEFORE, _ADV_AFTER, _PART_AFTER):
+        s = rx.sub(lambda m: mark(m.group(0), ordinal(m.group("ord"))), s)
+    return s
