@@ -941,7 +941,6 @@ def _cut(s: str, marks: _Marks) -> str:
         what = f"the coordinates '{m.group(0).strip()}'"
         return marks.add(m.group(0), location=Location(_to_float(x, what), _to_float(y, what)))
 
-    s = cut_times(s, lambda original, t: marks.add(original, time=t))
     s = _LOC1.sub(loc, s)
     s = _LOC2.sub(loc, s)
 
@@ -1804,6 +1803,7 @@ def _segments(text: str, marks: _Marks) -> tuple[list[tuple[str, str]], str]:
     if m:  # a task chain holds goals, not a choice between objects
         raise ParseError(f"'{m.group(0)}': a choice between objects is not supported; name the one to visit "
                          "(or list both to visit both)")
+    s = cut_times(s, lambda original, t: marks.add(original, time=t))  # before canonical forms reword "first"
     s = _number_words(_canonical(s))
     s = _FIRST_OF_ALL.sub("first", s)
     s = _cut(s, marks)
@@ -1946,6 +1946,10 @@ def parse_instruction(text: str) -> TaskChain:
         goals = [g for g in goals if not (
             g.connector in (".", "!", "?") and not g.det and g.node is not None and len(g.node.words) == 1
             and not (g.room or g.locations or g.sensors or g.relations or g.node.relations or g.node.states))]
+    if any(g.time is not None for g in goals):  # a time-indexed instruction names its objects with determiners ("the
+        # mug you saw first"): its pieces with none and no mark are vocatives, greetings and sign-offs ("okay, team,",
+        # "chop chop", "heard?", "off you go to it, love")
+        goals = [g for g in goals if g.det or g.time is not None or g.room or g.locations or g.sensors]
     if not goals:
         raise ParseError(
             "no recognisable goal in the instruction: name at least one place or object to go to, "

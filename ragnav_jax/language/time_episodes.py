@@ -12,7 +12,9 @@ instance (`RetrievalIndex.inst_first` / `inst_last`), so key-pose spacing and ca
 are what it gets wrong.
 
 Phrasings: "seen" are this module's own templates (the time reader, `time_words.py`, was written beside them);
-"heldout" is `time_text_heldout.py`, written by an author who never read the reader.
+"heldout" (`time_text_heldout.py`, set 1) and "heldout2" (`time_text_heldout2.py`, set 2) were each written by an
+author who never read the reader. Set 1 was measured fresh once, then the reader's second round was developed on
+its failures; set 2 was written before that round and measured fresh once after it.
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.scene import Scene
 
 MODALITY = "text+time"
-PHRASINGS = ("seen", "heldout")
+PHRASINGS = ("seen", "heldout", "heldout2")
 MAX_RANK = 3
 
 
@@ -102,9 +104,9 @@ def time_goal(rng: np.random.Generator, phrase: str, order: str, rank: int, room
 def _phrasing(name: str):
     if name == "seen":
         return time_goal
-    from ragnav_jax.language.time_text_heldout import time_goal_heldout
+    import importlib
 
-    return time_goal_heldout
+    return getattr(importlib.import_module(f"ragnav_jax.language.time_text_{name}"), f"time_goal_{name}")
 
 
 def generate_time_episodes(scenes: Sequence[Scene], streams: Mapping[str, ExplorationStream], facts_of,

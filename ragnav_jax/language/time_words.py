@@ -25,7 +25,8 @@ ORDINALS: dict[str, tuple[str, int]] = {
     "second to last": ("last", 2), "next to last": ("last", 2), "last but one": ("last", 2),
     "penultimate": ("last", 2), "penultimately": ("last", 2), "second last": ("last", 2),
     "second most recent": ("last", 2), "second most recently": ("last", 2), "one before last": ("last", 2),
-    "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3),
+    "second from last": ("last", 2), "second from the end": ("last", 2),
+    "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3), "third from last": ("last", 3),
     "third most recent": ("last", 3), "third most recently": ("last", 3), "antepenultimate": ("last", 3),
 }
 # forms that only work as adverbs after the verb, not before the noun, and vice versa
@@ -45,14 +46,16 @@ _SUBJ = r"(?:i|you|we|u|the\s+robot|it)(?:'ve|'d|\s+have|\s+had)?"
 _VERB = ("saw|seen|spotted|spied|noticed|passed|came\\s+across|come\\s+across|found|encountered|observed|met|clocked|"
          "glimpsed|sighted|caught\\s+sight\\s+of|ran\\s+into|laid\\s+eyes\\s+on|set\\s+eyes\\s+on|walked\\s+(?:past|by)|"
          "went\\s+(?:past|by)|drove\\s+(?:past|by)|rolled\\s+(?:past|by)|recorded|logged|detected|mapped|viewed|"
-         "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)")
+         "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)|eyeballed|happened\\s+(?:up)?on|"
+         "stumbled\\s+(?:up)?on|stumbled\\s+across|bumped\\s+into|came\\s+upon|clapped\\s+eyes\\s+on|"
+         "laid\\s+eyes\\s+upon|set\\s+eyes\\s+upon|caught\\s+a\\s+glimpse\\s+of|got\\s+a\\s+look\\s+at")
 _PARTICIPLE = ("seen|spotted|noticed|observed|sighted|encountered|glimpsed|recorded|logged|detected|viewed|"
                "discovered|registered|found|passed|mapped")
 _TRAIL = (r"(?:\s+(?:it|one|them))?(?:\s+of\s+all)?"
           r"(?:\s+(?:during|on|in|while|when|as)\s+(?:the|your|our|its|my|you\s+were|we\s+were)?\s*"
           r"(?:exploration|exploring|explored|tour|walk|walkthrough|walk-through|patrol|sweep|survey|run|round|"
           r"first\s+pass|scouting(?:\s+run)?|look\s+around|mapping(?:\s+run)?)\b)?"
-          r"(?:\s+(?:earlier|before|previously|today|yesterday|this\s+morning|back\s+then))?")
+          r"(?:\s+(?:earlier(?:\s+on)?|previously|today|yesterday|this\s+morning|back\s+then))?")
 _WORD = r"(?!(?:is|are|was|were|be|been|being|'s)\b)[^\s,.;:!?()\[\]⟪⟫]+"  # a word of a noun phrase, no copula
 _NP = rf"(?P<np>(?:{_WORD}\s+){{0,5}}?{_WORD})"
 _DET = r"(?P<det>the|your|that|my|our)"
@@ -86,6 +89,33 @@ _WHERE_SEEN = re.compile(
     r"next|beside|before|after|please)\b))")
 
 
+# "you saw more than one toolbox (in the garage), right? go to the first one you found": the sentence that says
+# several were seen names no goal; the ordinal "one" after it is that noun phrase (and room).
+_SEVERAL = re.compile(rf"(?P<all>[^.?!;:]*?\bmore\s+than\s+(?:one|1)\s+{_NP}(?P<room>\s+in\s+the\s+{_NP.replace('np', 'rm')})?"
+                      r"(?=\s*(?:[.?!;:,]|-\s|$|\s+(?:earlier|before|right|didn't|did|today|during|on|yesterday)\b))"
+                      r"[^.?!;:]*?(?:[.?!;:]+|\s-\s))")
+_ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_ORD_ADJ})\s+)?one\b")
+
+
+def _several(s: str) -> str:
+    """Rewrites "... more than one X ... ? ... the <ordinal> one <seen ...>" as "... the <ordinal> X <seen ...>"
+    where what follows holds a time phrase about the one (otherwise unchanged)."""
+    m = _SEVERAL.search(s)
+    if not m:
+        return s
+    rest = s[m.end():]
+    one = _ONE.search(rest)
+    if not one:
+        return s
+    room = f" in the {m.group('rm')}" if m.group("room") else ""
+    ord_ = f"{one.group('ord')} " if one.group("ord") else ""
+    new = rest[: one.start()] + f"the {ord_}{m.group('np')}{room}" + rest[one.end():]
+    probe = rest[one.start():]
+    timed = any(rx.search(probe) for rx in (_PRE, _ADV_BEFORE, _ADV_AFTER, _PART_AFTER)) or bool(
+        re.match(rf"the\s+(?:{_ORD_ADJ})\s+one\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB})\b", probe))
+    return s[: m.start()] + " " + new if timed else s
+
+
 def ordinal(text: str) -> TimeConstraint:
     """'second-to-last' -> TimeConstraint('last', 2)."""
     order, rank = ORDINALS[re.sub(_SEP, " ", text.strip())]
@@ -102,6 +132,7 @@ def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
             return f" {m.group('det')} {m.group('np')}{mark(m.group(0), t)}"
         return sub
 
+    s = _several(s)
     s = _BEFORE_MOVE.sub(keep_np(TimeConstraint("first", 1)), s)
     s = _OLD_SPOT.sub(keep_np(TimeConstraint("first", 1)), s)
     s = _WHERE_SEEN.sub(keep_np(None), s)
