@@ -50,6 +50,18 @@ def read(text: str) -> list[tuple[str, str | None, tuple[str, int] | None]]:
     ("Okay, team, get over to the drying rack we eyeballed second from last. Chop chop.",
      [("drying rack", None, ("last", 2))]),
     ("Oh, sweetheart, the kiln you happened upon first - off you go to it. Heard?", [("kiln", None, ("first", 1))]),
+    # round 3, from held-out set 2's failures after its fresh run
+    ("You passed more than one radiator on your walk-round. I want you at the second-from-last one. Cheers.",
+     [("radiator", None, ("last", 2))]),
+    ("You passed more than one kettle in the pantry. Please go to the very first of them.",
+     [("kettle", "pantry", ("first", 1))]),
+    ("Go to the armchair -- the one we passed earliest on our rounds. Thanks so much.",
+     [("armchair", None, ("first", 1))]),
+    ("Counting back from the end of your walk-round, the first radiator you clocked is the one I want. Go to it.",
+     [("radiator", None, ("last", 1))]),
+    ("Reckoning from the beginning of our survey, the third easel we came upon is the one to which I should like "
+     "you to proceed.", [("easel", None, ("first", 3))]),
+    ("Head to the computer monitor you checked on second, please.", [("computer monitor", None, ("first", 2))]),
 ])
 def test_time_phrases_read_into_the_goal(text, want):
     assert read(text) == want

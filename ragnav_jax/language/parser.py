@@ -1087,7 +1087,8 @@ class _Piece:
 
     @property
     def empty(self) -> bool:
-        return not (self.room or self.locations or self.sensors or self.relations or self.attrs_only or self.attrs_after)
+        return not (self.room or self.locations or self.sensors or self.relations or self.attrs_only or self.attrs_after
+                    or self.time)
 
 
 def _state_name(word: str) -> str:
@@ -1575,7 +1576,7 @@ def _parse_segment(seg: str, marks: _Marks, connector: str) -> _Piece:
         current = node
     if words and words[-1] in ("one", "ones") and ((len(words) > 1 and words[-2] in _QUANTIFIERS) or (all(
             w in _SEQUENCE_WORDS for w in words[:-1]) and not (piece.sensors or piece.locations or piece.room or
-                                                                 top.relations or top.states))):
+                                                                 top.relations or top.states or piece.time))):
         # "pick up every one", "so long as each one is cleared", "and the last one, the speaker": the goals said
         # elsewhere, counted or put in order, no goal of its own
         return _Piece(node=None, connector=connector, texts=piece.texts)
@@ -1929,6 +1930,7 @@ def parse_instruction(text: str) -> TaskChain:
                 anchor.add_states(p.node.states + p.attrs_after)
                 anchor.relations += p.node.relations + p.relations
                 goals[-1].texts += p.texts
+                goals[-1].time = goals[-1].time or p.time  # "the armchair -- the one we passed first"
             else:
                 _merge(goals[-1], p)
             continue
@@ -1949,7 +1951,7 @@ def parse_instruction(text: str) -> TaskChain:
     if any(g.time is not None for g in goals):  # a time-indexed instruction names its objects with determiners ("the
         # mug you saw first"): its pieces with none and no mark are vocatives, greetings and sign-offs ("okay, team,",
         # "chop chop", "heard?", "off you go to it, love")
-        goals = [g for g in goals if g.det or g.time is not None or g.room or g.locations or g.sensors]
+        goals = [g for g in goals if g.det or g.time is not None or g.room or g.locations or g.sensors] or goals
     if not goals:
         raise ParseError(
             "no recognisable goal in the instruction: name at least one place or object to go to, "

@@ -12,9 +12,10 @@ instance (`RetrievalIndex.inst_first` / `inst_last`), so key-pose spacing and ca
 are what it gets wrong.
 
 Phrasings: "seen" are this module's own templates (the time reader, `time_words.py`, was written beside them);
-"heldout" (`time_text_heldout.py`, set 1) and "heldout2" (`time_text_heldout2.py`, set 2) were each written by an
-author who never read the reader. Set 1 was measured fresh once, then the reader's second round was developed on
-its failures; set 2 was written before that round and measured fresh once after it.
+"heldout" (`time_text_heldout.py`, set 1), "heldout2" (set 2) and "heldout3" (set 3) were each written by an author
+who never read the reader. Set 1 was measured fresh once, then the reader's second round was developed on its
+failures; set 2 was written before that round and measured fresh once after it, then the third round was developed
+on its failures; set 3 was written before that round and measured fresh once after it.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.scene import Scene
 
 MODALITY = "text+time"
-PHRASINGS = ("seen", "heldout", "heldout2")
+PHRASINGS = ("seen", "heldout", "heldout2", "heldout3")
 MAX_RANK = 3
 
 

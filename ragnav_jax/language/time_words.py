@@ -48,13 +48,14 @@ _VERB = ("saw|seen|spotted|spied|noticed|passed|came\\s+across|come\\s+across|fo
          "went\\s+(?:past|by)|drove\\s+(?:past|by)|rolled\\s+(?:past|by)|recorded|logged|detected|mapped|viewed|"
          "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)|eyeballed|happened\\s+(?:up)?on|"
          "stumbled\\s+(?:up)?on|stumbled\\s+across|bumped\\s+into|came\\s+upon|clapped\\s+eyes\\s+on|"
-         "laid\\s+eyes\\s+upon|set\\s+eyes\\s+upon|caught\\s+a\\s+glimpse\\s+of|got\\s+a\\s+look\\s+at")
+         "laid\\s+eyes\\s+upon|set\\s+eyes\\s+upon|caught\\s+a\\s+glimpse\\s+of|got\\s+a\\s+look\\s+at|"
+         "checked\\s+(?:on|out)|looked\\s+in\\s+on")
 _PARTICIPLE = ("seen|spotted|noticed|observed|sighted|encountered|glimpsed|recorded|logged|detected|viewed|"
                "discovered|registered|found|passed|mapped")
 _TRAIL = (r"(?:\s+(?:it|one|them))?(?:\s+of\s+all)?"
           r"(?:\s+(?:during|on|in|while|when|as)\s+(?:the|your|our|its|my|you\s+were|we\s+were)?\s*"
           r"(?:exploration|exploring|explored|tour|walk|walkthrough|walk-through|patrol|sweep|survey|run|round|"
-          r"first\s+pass|scouting(?:\s+run)?|look\s+around|mapping(?:\s+run)?)\b)?"
+          r"first\s+pass|scouting(?:\s+run)?|look\s+around|mapping(?:\s+run)?|rounds|walk-?round)\b)?"
           r"(?:\s+(?:earlier(?:\s+on)?|previously|today|yesterday|this\s+morning|back\s+then))?")
 _WORD = r"(?!(?:is|are|was|were|be|been|being|'s)\b)[^\s,.;:!?()\[\]⟪⟫]+"  # a word of a noun phrase, no copula
 _NP = rf"(?P<np>(?:{_WORD}\s+){{0,5}}?{_WORD})"
@@ -89,31 +90,49 @@ _WHERE_SEEN = re.compile(
     r"next|beside|before|after|please)\b))")
 
 
-# "you saw more than one toolbox (in the garage), right? go to the first one you found": the sentence that says
-# several were seen names no goal; the ordinal "one" after it is that noun phrase (and room).
+# "you saw more than one toolbox (in the garage), right? go to the first one you found", "there was more than one
+# kiln on your rounds. go to the third one": the sentence that says several were seen names no goal; the ordinal
+# "one" (or "of them") after it is that noun phrase (and room).
 _SEVERAL = re.compile(rf"(?P<all>[^.?!;:]*?\bmore\s+than\s+(?:one|1)\s+{_NP}(?P<room>\s+in\s+the\s+{_NP.replace('np', 'rm')})?"
                       r"(?=\s*(?:[.?!;:,]|-\s|$|\s+(?:earlier|before|right|didn't|did|today|during|on|yesterday)\b))"
                       r"[^.?!;:]*?(?:[.?!;:]+|\s-\s))")
-_ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_ORD_ADJ})\s+)?one\b")
+_ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_alt(ORDINALS)})[\s-]+)?(?:one|of\s+them)\b")
+# what makes the several a memory: someone saw them, or they were met on the exploration
+_SEEN_THEN = re.compile(rf"\b{_SUBJ}\s+(?:{_VERB})\b|\b(?:rounds|walk-?round|survey|exploration|tour|patrol|sweep)\b")
 
 
-def _several(s: str) -> str:
-    """Rewrites "... more than one X ... ? ... the <ordinal> one <seen ...>" as "... the <ordinal> X <seen ...>"
-    where what follows holds a time phrase about the one (otherwise unchanged)."""
+def _several(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
+    """Rewrites "... more than one X ... . ... the <ordinal> one <seen ...>" as "... the <ordinal> X <seen ...>" where
+    a time phrase about the one follows, and "... the <ordinal> one" as "... the X <mark>" where the sentence naming
+    the several says they were seen; otherwise unchanged."""
     m = _SEVERAL.search(s)
-    if not m:
-        return s
-    rest = s[m.end():]
-    one = _ONE.search(rest)
+    one = _ONE.search(s, m.end()) if m else None
     if not one:
         return s
-    room = f" in the {m.group('rm')}" if m.group("room") else ""
-    ord_ = f"{one.group('ord')} " if one.group("ord") else ""
-    new = rest[: one.start()] + f"the {ord_}{m.group('np')}{room}" + rest[one.end():]
-    probe = rest[one.start():]
-    timed = any(rx.search(probe) for rx in (_PRE, _ADV_BEFORE, _ADV_AFTER, _PART_AFTER)) or bool(
-        re.match(rf"the\s+(?:{_ORD_ADJ})\s+one\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB})\b", probe))
-    return s[: m.start()] + " " + new if timed else s
+    x = m.group("np") + (f" in the {m.group('rm')}" if m.group("room") else "")
+    probe = s[one.start():]
+    if any(rx.search(probe) for rx in (_PRE, _ADV_BEFORE, _ADV_AFTER, _PART_AFTER)) or re.match(
+            rf"the\s+(?:{_ORD_ADJ})\s+one\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB})\b", probe):
+        said = f"the {one.group('ord') + ' ' if one.group('ord') else ''}{x}"
+    elif one.group("ord") and _SEEN_THEN.search(m.group("all")):
+        said = f"the {x}{mark(one.group(0), ordinal(one.group('ord')))}"
+    else:
+        return s
+    return s[: m.start()] + " " + s[m.end(): one.start()] + said + s[one.end():]
+
+
+# "counting back from the end of your rounds, the first X you saw": the ordinals count from the latest view
+_COUNTING = re.compile(r"\b(?:reckoning|counting|working|going|starting)\s+(?P<back>back(?:wards)?\s+)?from\s+the\s+"
+                       r"(?:very\s+)?(?P<from>end|start|beginning|outset|latest|most\s+recent|earliest|first)\b"
+                       r"(?:\s+of\s+(?:the|your|our|my|its)\s+[^,.;:!?]*)?\s*[,;:]?")
+
+
+# "the first radiator you clocked is the one i want": what follows the time phrase says only that it is the goal
+_THE_ONE_I_WANT = re.compile(r"(⟪[a-z]+⟫)\s*(?:is|'s)\s+the\s+one\s+(?:(?:that|which)\s+)?(?:to\s+which\s+)?(?:i|we)\b[^.;:!?]*")
+
+
+def _reversed(t: TimeConstraint) -> TimeConstraint:
+    return TimeConstraint("last" if t.order == "first" else "first", t.rank)
 
 
 def ordinal(text: str) -> TimeConstraint:
@@ -132,7 +151,12 @@ def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
             return f" {m.group('det')} {m.group('np')}{mark(m.group(0), t)}"
         return sub
 
-    s = _several(s)
+    m = _COUNTING.search(s)
+    if m:  # counting from the end reverses the ordinals that follow; counting from the start is how they read
+        s = s[: m.start()] + s[m.end():]
+        if m.group("back") or m.group("from") in ("end", "latest") or m.group("from").startswith("most"):
+            mark = (lambda put: lambda original, t: put(original, _reversed(t)))(mark)
+    s = _several(s, mark)
     s = _BEFORE_MOVE.sub(keep_np(TimeConstraint("first", 1)), s)
     s = _OLD_SPOT.sub(keep_np(TimeConstraint("first", 1)), s)
     s = _WHERE_SEEN.sub(keep_np(None), s)
@@ -140,4 +164,4 @@ def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
     s = _PRE_PART.sub(lambda m: f" {m.group('det')}{mark(m.group(0), ordinal(m.group('ord')))}", s)
     for rx in (_ADV_BEFORE, _ADV_AFTER, _PART_AFTER):
         s = rx.sub(lambda m: mark(m.group(0), ordinal(m.group("ord"))), s)
-    return s
+    return _THE_ONE_I_WANT.sub(r"\1", s)

@@ -7,10 +7,10 @@ set -euo pipefail
 R=${R:-runs/r44}
 rag() { PYTHONPATH=${WT:-.} .venv/bin/python -m ragnav_jax.cli "$@"; }
 for run in seen-t unseen2-t unseen3; do
-  for ph in seen heldout; do
+  for ph in seen heldout heldout2; do
     out=$R/time/$run-$ph
     [ -f $out/episodes.jsonl ] || rag episodes --scenes $R/$run --time-indexed --out $out/episodes.jsonl --quiet \
       episodes.time_phrasing=$ph
-    rag retrieve --run $R/$run --episodes $out/episodes.jsonl --out $out/retrieve --force --quiet > /dev/null
+    rag retrieve --run $R/$run --episodes $out/episodes.jsonl --out $out/retrieve --force --quiet --allow-unparsed > /dev/null
   done
 done
