@@ -40,6 +40,10 @@ def test_every_method_runs_and_rows_follow_the_instance_rule(setup, apartment, m
         if r["correct"]:  # correct means the chosen node observes the goal instance itself
             assert ids.index(r["goal"]) in set(obs[r["node"]][obs[r["node"]] >= 0].tolist())
     assert summary["retrieval_ms_single"] >= 0
+    if method.startswith("ragnav"):  # the instance rule is the stricter: its hits are node hits
+        assert all(r["correct"] or not r["instance_correct"] for r in rows)
+        assert summary["instance_accuracy"] <= summary["retrieval_accuracy"]
+        assert summary["instance_accuracy"] > 0.5 * summary["retrieval_accuracy"]
 
 
 def test_ragnav_text_queries_are_retrieved(setup, apartment):

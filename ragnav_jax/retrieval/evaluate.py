@@ -4,7 +4,9 @@ Accuracy rule (instance-level, top-1): subgoal k of an episode is correct when t
 returned for it *observes the ground-truth object instance* goal k, i.e. that instance is among the
 objects visible from the node's key pose (memory.obs_object). Another object of the same category
 does not count. Subgoals are matched to goals by position; an instruction that fails to parse, or
-parses into fewer subgoals than it has goals, scores its unmatched goals as wrong.
+parses into fewer subgoals than it has goals, scores its unmatched goals as wrong. RAGNav's rows also say whether
+the instance the best node's score came from is the goal's object (`instance_correct`, summary
+`instance_accuracy`): a key pose that sees two mugs observes both, and time-indexed queries ask which of them.
 
 Timing: `retrieval_ms_batched` is the wall time of the one jitted call scoring every subgoal of every
 scene, divided by the number of subgoals (kernels only; queries already embedded);
@@ -239,6 +241,7 @@ def evaluate_retrieval(
         items = list(bmeta.items)
         live = [i for i, sl in enumerate(bmeta.slots) if sl is not None]
         best_node = np.full(len(items), -1)
+        grounded = np.full(len(items), -1)  # the scene object of the best node's best instance
         timing["embed_ms"] = bmeta.embed_ms
         if batch is not None:
             index, queries, qmask = batch.index, batch.queries, batch.qmask
@@ -248,8 +251,13 @@ def evaluate_retrieval(
             run = lambda: score_bank(index, queries, qmask, p)  # noqa: E731
             timing["retrieval_ms_batched"] = 1e3 * _median_time(run, 3) / len(live)
             best = np.asarray(run()[0])
+            which = np.asarray(jax.jit(scored_batch)(index, queries, p)[1]["instance"])  # (B, Q, N) best slot
             for i in live:
                 best_node[i] = best[bmeta.slots[i]]
+                b, q = bmeta.slots[i]
+                slots = bmeta.imetas[b].slot_objects[best_node[i]] if best_node[i] < bmeta.imetas[b].num_nodes else ()
+                j = int(which[b, q, best_node[i]])
+                grounded[i] = int(slots[j]) if j < len(slots) else -1
             # Warm single-query latency: one subgoal, one scene.
             b0, s0 = bmeta.slots[live[0]]
             idx0 = take_leaves(index, b0)
@@ -262,6 +270,7 @@ def evaluate_retrieval(
         items = goal_items(episodes)
         live = [(i, it) for i, it in enumerate(items) if it[3] is not None]
         best_node = np.full(len(items), -1)
+        grounded = None  # the baselines rank nodes, not instances
         cls = BASELINES[method]
         observed = {}
         t_total, n_total = 0.0, 0
@@ -296,6 +305,8 @@ def evaluate_retrieval(
             "subgoal": sg.target.phrase if sg is not None else None, "node": node, "correct": bool(ok),
             "failure": None if ok else ("parse" if sg is None else "wrong_node"),
         })
+        if grounded is not None:  # stricter: the instance the node's score came from is the goal's object
+            rows[-1]["instance_correct"] = bool(ok and grounded[i] == gidx)
     acc = float(np.mean([r["correct"] for r in rows])) if rows else 0.0
     by_mod = defaultdict(list)
     for r in rows:
@@ -307,6 +318,8 @@ def evaluate_retrieval(
         "queries": len(rows),
         "episodes": len(episodes),
         "parse_failures": sum(r["failure"] == "parse" for r in rows),
+        **({"instance_accuracy": float(np.mean([r["instance_correct"] for r in rows]))} if grounded is not None and rows
+           else {}),
         **{k: round(v, 4) for k, v in timing.items()},
     }
     return rows, summary
