@@ -204,14 +204,14 @@ class EpisodesConfig:
     # time-indexed episodes (ragnav episodes --time-indexed, language/time_episodes.py):
     time_per_scene: int = 12  # queries drawn per explored scene
     time_gap: int = 25  # stream records between the target's view and its neighbours' in the asked order
-    time_phrasing: str = "seen"  # seen (the generator's own templates) | heldout, heldout2, heldout3
+    time_phrasing: str = "seen"  # seen (the generator's own templates) | heldout, heldout2, heldout3, heldout4
     # (time_text_heldout*.py: sets by authors who never read the reader)
 
     def __post_init__(self):
         _check(self.time_per_scene >= 1, "episodes.time_per_scene", "must be >= 1")
         _check(self.time_gap >= 0, "episodes.time_gap", "must be >= 0")
-        _check(self.time_phrasing in ("seen", "heldout", "heldout2", "heldout3"), "episodes.time_phrasing",
-               "must be seen, heldout, heldout2 or heldout3")
+        _check(self.time_phrasing in ("seen", "heldout", "heldout2", "heldout3", "heldout4"), "episodes.time_phrasing",
+               "must be seen or heldout, heldout2, heldout3, heldout4")
         for k in ("text", "text_location", "text_location_sensor"):
             _check(getattr(self, k) >= 0, f"episodes.{k}", "must be >= 0")
         _check(1 <= self.min_goals <= self.max_goals <= 8, "episodes.min_goals", "need 1 <= min_goals <= max_goals <= 8")

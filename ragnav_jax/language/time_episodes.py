@@ -12,10 +12,9 @@ instance (`RetrievalIndex.inst_first` / `inst_last`), so key-pose spacing and ca
 are what it gets wrong.
 
 Phrasings: "seen" are this module's own templates (the time reader, `time_words.py`, was written beside them);
-"heldout" (`time_text_heldout.py`, set 1), "heldout2" (set 2) and "heldout3" (set 3) were each written by an author
-who never read the reader. Set 1 was measured fresh once, then the reader's second round was developed on its
-failures; set 2 was written before that round and measured fresh once after it, then the third round was developed
-on its failures; set 3 was written before that round and measured fresh once after it.
+"heldout" (`time_text_heldout.py`, set 1) to "heldout4" (set 4) were each written by an author who never read the
+reader. Set k was measured fresh once with the reader frozen at round k, then round k + 1 was developed on its
+failures (and those of the sets before it); set k + 1 was written before round k + 1 was.
 """
 
 from __future__ import annotations
@@ -33,7 +32,7 @@ from ragnav_jax.sim.stream import ExplorationStream
 from ragnav_jax.world.scene import Scene
 
 MODALITY = "text+time"
-PHRASINGS = ("seen", "heldout", "heldout2", "heldout3")
+PHRASINGS = ("seen", "heldout", "heldout2", "heldout3", "heldout4")
 MAX_RANK = 3
 
 

@@ -27,6 +27,7 @@ ORDINALS: dict[str, tuple[str, int]] = {
     "second most recent": ("last", 2), "second most recently": ("last", 2), "one before last": ("last", 2),
     "second from last": ("last", 2), "second from the end": ("last", 2),
     "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3), "third from last": ("last", 3),
+    "fourth to last": ("last", 4), "fifth to last": ("last", 5),
     "third most recent": ("last", 3), "third most recently": ("last", 3), "antepenultimate": ("last", 3),
 }
 # forms that only work as adverbs after the verb, not before the noun, and vice versa
@@ -49,7 +50,7 @@ _VERB = ("saw|seen|spotted|spied|noticed|passed|came\\s+across|come\\s+across|fo
          "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)|eyeballed|happened\\s+(?:up)?on|"
          "stumbled\\s+(?:up)?on|stumbled\\s+across|bumped\\s+into|came\\s+upon|clapped\\s+eyes\\s+on|"
          "laid\\s+eyes\\s+upon|set\\s+eyes\\s+upon|caught\\s+a\\s+glimpse\\s+of|got\\s+a\\s+look\\s+at|"
-         "checked\\s+(?:on|out)|looked\\s+in\\s+on")
+         "checked\\s+(?:on|out)|looked\\s+in\\s+on|identified|(?:watched|saw)\\s+(?:you|it|the\\s+robot)\\s+(?:find|spot|pass)")
 _PARTICIPLE = ("seen|spotted|noticed|observed|sighted|encountered|glimpsed|recorded|logged|detected|viewed|"
                "discovered|registered|found|passed|mapped")
 _TRAIL = (r"(?:\s+(?:it|one|them))?(?:\s+of\s+all)?"
@@ -93,10 +94,14 @@ _WHERE_SEEN = re.compile(
 # "you saw more than one toolbox (in the garage), right? go to the first one you found", "there was more than one
 # kiln on your rounds. go to the third one": the sentence that says several were seen names no goal; the ordinal
 # "one" (or "of them") after it is that noun phrase (and room).
-_SEVERAL = re.compile(rf"(?P<all>[^.?!;:]*?\bmore\s+than\s+(?:one|1)\s+{_NP}(?P<room>\s+in\s+the\s+{_NP.replace('np', 'rm')})?"
-                      r"(?=\s*(?:[.?!;:,]|-\s|$|\s+(?:earlier|before|right|didn't|did|today|during|on|yesterday)\b))"
-                      r"[^.?!;:]*?(?:[.?!;:]+|\s-\s))")
-_ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_alt(ORDINALS)})[\s-]+)?(?:one|of\s+them)\b")
+_SEVERAL = re.compile(rf"(?P<all>[^.?!;:]*?\b(?:more\s+than\s+(?:one|1)|every|each|all\s+(?:of\s+)?the)\s+{_NP}"
+                      rf"(?P<room>\s+(?:in|within)\s+the\s+{_NP.replace('np', 'rm')})?"
+                      r"(?=\s*(?:[.?!;:,]|-\s|$|\s+(?:earlier|before|right|didn't|did|today|during|on|yesterday|in\s+"
+                      rf"(?:chronological\s+)?order)\b|\s+(?:that\s+|which\s+)?{_SUBJ}\s+(?:{_VERB})\b))"
+                      r"[^.?!;:,]*?(?:[.?!;:,]+|\s-\s))")
+_ROOM_AFTER = re.compile(r"\b(?:in|within|inside)\s+the\s+(?P<rm>[a-z][a-z -]*?)(?=\s+(?:in\s+(?:chronological\s+)?order|on|"
+                         r"during|earlier|today|this|when|while)\b|\s*[,.;:!?]|\s*$)")
+_ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_alt(ORDINALS)})(?:[\s-]+(?:one|of\s+them))?|one|of\s+them)\b")
 # what makes the several a memory: someone saw them, or they were met on the exploration
 _SEEN_THEN = re.compile(rf"\b{_SUBJ}\s+(?:{_VERB})\b|\b(?:rounds|walk-?round|survey|exploration|tour|patrol|sweep)\b")
 
@@ -109,12 +114,16 @@ def _several(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
     one = _ONE.search(s, m.end()) if m else None
     if not one:
         return s
-    x = m.group("np") + (f" in the {m.group('rm')}" if m.group("room") else "")
+    room = m.group("rm") if m.group("room") else None
+    if room is None:  # "every speaker we saw down in the music room": the room after the verb
+        r = _ROOM_AFTER.search(m.group("all"), m.end("np") - m.start())
+        room = r.group("rm") if r else None
+    x = m.group("np") + (f" in the {room}" if room else "")
     probe = s[one.start():]
     if any(rx.search(probe) for rx in (_PRE, _ADV_BEFORE, _ADV_AFTER, _PART_AFTER)) or re.match(
             rf"the\s+(?:{_ORD_ADJ})\s+one\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB})\b", probe):
         said = f"the {one.group('ord') + ' ' if one.group('ord') else ''}{x}"
-    elif one.group("ord") and _SEEN_THEN.search(m.group("all")):
+    elif one.group("ord") and _SEEN_THEN.search(m.group("all") + " " + s[m.end(): one.start()]):
         said = f"the {x}{mark(one.group(0), ordinal(one.group('ord')))}"
     else:
         return s
@@ -128,7 +137,25 @@ _COUNTING = re.compile(r"\b(?:reckoning|counting|working|going|starting)\s+(?P<b
 
 
 # "the first radiator you clocked is the one i want": what follows the time phrase says only that it is the goal
-_THE_ONE_I_WANT = re.compile(r"(⟪[a-z]+⟫)\s*(?:is|'s)\s+the\s+one\s+(?:(?:that|which)\s+)?(?:to\s+which\s+)?(?:i|we)\b[^.;:!?]*")
+_THE_ONE_I_WANT = re.compile(r"(⟪[a-z]+⟫)\s*(?:(?:is|'s)\s+the\s+one\s+(?:(?:that|which)\s+)?(?:to\s+which\s+)?(?:i|we)\b[^.;:!?]*"
+                             r"|(?:(?:that|which)\s+)?(?:i'm|i\s+am|we're|we\s+are)\s+after\b)")
+
+
+# "just before the last one", "straight after the first": one place further from the end counted from
+_RELATIVE = re.compile(rf"(?P<one>\bone\s+)?\b(?:just|right|straight|immediately)\s+(?P<rel>before|after)\s+the\s+(?P<ref>{_alt(ORDINALS)})"
+                       r"(?:[\s-]+one)?\b")
+_WORDS = {("first", 1): "first", ("first", 2): "second", ("first", 3): "third", ("first", 4): "fourth",
+          ("first", 5): "fifth", ("last", 1): "last", ("last", 2): "second to last", ("last", 3): "third to last",
+          ("last", 4): "fourth to last", ("last", 5): "fifth to last"}
+# "it's the first chair we saw", "the target is the second one": the goal said as what something is
+_PRESENTING = re.compile(r"\b(?:it(?:'s|\s+is)|(?:the\s+)?(?:target|priority|goal|aim)\s+is)\s+(?=the\s+[^.;:!?]*⟪)")
+
+
+def _relative(m: re.Match) -> str:
+    t = ordinal(m.group("ref"))
+    away = (m.group("rel") == "before") == (t.order == "last")  # before the last / after the first: one further
+    word = _WORDS.get((t.order, t.rank + (1 if away else -1)))
+    return m.group(0) if word is None else f"{word} one" if m.group("one") else word
 
 
 def _reversed(t: TimeConstraint) -> TimeConstraint:
@@ -156,6 +183,7 @@ def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
         s = s[: m.start()] + s[m.end():]
         if m.group("back") or m.group("from") in ("end", "latest") or m.group("from").startswith("most"):
             mark = (lambda put: lambda original, t: put(original, _reversed(t)))(mark)
+    s = _RELATIVE.sub(_relative, s)
     s = _several(s, mark)
     s = _BEFORE_MOVE.sub(keep_np(TimeConstraint("first", 1)), s)
     s = _OLD_SPOT.sub(keep_np(TimeConstraint("first", 1)), s)
@@ -164,4 +192,4 @@ def cut_times(s: str, mark: Callable[[str, TimeConstraint], str]) -> str:
     s = _PRE_PART.sub(lambda m: f" {m.group('det')}{mark(m.group(0), ordinal(m.group('ord')))}", s)
     for rx in (_ADV_BEFORE, _ADV_AFTER, _PART_AFTER):
         s = rx.sub(lambda m: mark(m.group(0), ordinal(m.group("ord"))), s)
-    return _THE_ONE_I_WANT.sub(r"\1", s)
+    return _PRESENTING.sub("", _THE_ONE_I_WANT.sub(r"\1", s))

@@ -10,7 +10,7 @@ for pair in "heldout:0e0bb4f" "heldout2:b92b4bd" "heldout3:b931297"; do
   for run in seen-t unseen2-t unseen3; do
     out=$R/fresh/$run-$ph
     mkdir -p $out
-    PYTHONPATH=$wt .venv/bin/python -m ragnav_jax.cli retrieve --run $R/$run --episodes $R/time/$run-$ph/episodes.jsonl \
+    PYTHONPATH=$wt .venv/bin/python -P -m ragnav_jax.cli retrieve --run $R/$run --episodes $R/time/$run-$ph/episodes.jsonl \
       --out $out/retrieve --force --quiet --allow-unparsed > /dev/null
   done
 done

@@ -7,7 +7,7 @@
 # Methods: RAGNav, RAGNav with the time term off (retrieval.w_time=0), and the NaiveRAG-style baseline.
 set -euo pipefail
 R=${R:-runs/r44}
-rag() { PYTHONPATH=${WT:-.} .venv/bin/python -m ragnav_jax.cli "$@"; }
+rag() { PYTHONPATH=${WT:-.} .venv/bin/python -P -m ragnav_jax.cli "$@"; }  # -P: the package from WT, not the cwd
 for run in seen-t unseen2-t unseen3; do
   for ph in seen heldout heldout2 heldout3; do
     out=$R/time/$run-$ph

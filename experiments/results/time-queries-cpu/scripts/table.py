@@ -1,24 +1,48 @@
-"""table.py ROOT [ROOT_FRESH1 ROOT_FRESH2 ROOT_FRESH3]: markdown table of the time-indexed measure (measure.sh)."""
+"""table.py ROOT [FRESH]: markdown table of the time-indexed measure (measure.sh under ROOT; fresh.sh under FRESH).
+
+Parse agreement is the reader's at the code this runs with (PYTHONPATH): head noun, room and time of the goal."""
 import json
 import sys
 from pathlib import Path
 
+from ragnav_jax.language.agreement import chain_differences
+from ragnav_jax.language.episodes import load_truth
+from ragnav_jax.language.parser import parse_instruction
+from ragnav_jax.language.types import ParseError
+
 root = Path(sys.argv[1])
-fresh = {f"heldout{k if k > 1 else ''}": Path(p) for k, p in enumerate(sys.argv[2:], start=1)}
+fresh = Path(sys.argv[2]) if len(sys.argv) > 2 else None
 HOUSES = {"seen-t": "seen split", "unseen2-t": "fixed unseen", "unseen3": "fresh unseen"}
-print("| houses | phrasing | RAGNav top-1 (instance) | fresh run | time term off | NaiveRAG-style | parse agreement |")
+PHRASINGS = [p for p in ("seen", "heldout", "heldout2", "heldout3", "heldout4") if (root / "time" / f"seen-t-{p}").exists()]
+
+
+def acc(path: Path) -> str:
+    if not path.exists():
+        return "-"
+    s = json.loads(path.read_text())
+    inst = s.get("instance_accuracy")
+    return f"{s['retrieval_accuracy']:.3f}" + (f" ({inst:.3f})" if inst is not None else "")
+
+
+def agreement(d: Path) -> str:
+    truth = load_truth(d / "episodes.chains.jsonl")
+    ok = n = 0
+    for line in (d / "episodes.jsonl").read_text().splitlines():
+        ep = json.loads(line)
+        n += 1
+        try:
+            ok += not chain_differences(parse_instruction(ep["instruction"]), truth[ep["id"]])
+        except ParseError:
+            pass
+    return f"{ok}/{n}"
+
+
+print("| houses | phrasing | RAGNav top-1 (instance) | fresh run | time term off | NaiveRAG-style | whole chain parsed |")
 print("|---|---|---|---|---|---|---|")
 for run, name in HOUSES.items():
-    for ph in ("seen", "heldout", "heldout2", "heldout3"):
+    for ph in PHRASINGS:
         d = root / "time" / f"{run}-{ph}"
-        s = json.loads((d / "retrieve" / "summary.json").read_text())
-        fr = "-"
-        if ph in fresh and (f := fresh[ph] / "time" / f"{run}-{ph}" / "retrieve" / "summary.json").exists():
-            x = json.loads(f.read_text())
-            fr = f"{x['retrieval_accuracy']:.3f} ({x.get('instance_accuracy', float('nan')):.3f})"
-        off = json.loads((d / "retrieve-notime" / "summary.json").read_text())
-        nv = json.loads((d / "retrieve-naive_rag" / "summary.json").read_text())
-        ag = json.loads((d / "check-parse.json").read_text()) if (d / "check-parse.json").exists() else None
-        agree = f"{ag['agree']}/{ag['instructions']}" if ag else "-"
-        print(f"| {name} | {ph} | {s['retrieval_accuracy']:.3f} ({s['instance_accuracy']:.3f}) | {fr} | "
-              f"{off['retrieval_accuracy']:.3f} ({off['instance_accuracy']:.3f}) | {nv['retrieval_accuracy']:.3f} | {agree} |")
+        fr = acc(fresh / f"{run}-{ph}" / "retrieve" / "summary.json") if fresh and ph != "seen" else "-"
+        print(f"| {name} | {ph} | {acc(d / 'retrieve' / 'summary.json')} | {fr} | "
+              f"{acc(d / 'retrieve-notime' / 'summary.json')} | {acc(d / 'retrieve-naive_rag' / 'summary.json')} | "
+              f"{agreement(d)} |")
