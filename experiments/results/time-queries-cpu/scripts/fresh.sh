@@ -4,7 +4,7 @@
 # that froze each design, with only retrieval/evaluate.py's scoring of rows patched in (/tmp/eval_instance.patch).
 set -euo pipefail
 R=${R:-runs/r44}
-for pair in "heldout:0e0bb4f" "heldout2:b92b4bd" "heldout3:b931297"; do
+for pair in "heldout:0e0bb4f" "heldout2:b92b4bd" "heldout3:b931297" "heldout4:bddf4d3"; do
   ph=${pair%%:*}; c=${pair##*:}; wt=/tmp/fresh-$c
   [ -d $wt ] || { git worktree add -q $wt $c && ln -s $PWD/.venv $wt/.venv && git -C $wt apply /tmp/eval_instance.patch; }
   for run in seen-t unseen2-t unseen3; do

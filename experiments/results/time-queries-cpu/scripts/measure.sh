@@ -9,7 +9,7 @@ set -euo pipefail
 R=${R:-runs/r44}
 rag() { PYTHONPATH=${WT:-.} .venv/bin/python -P -m ragnav_jax.cli "$@"; }  # -P: the package from WT, not the cwd
 for run in seen-t unseen2-t unseen3; do
-  for ph in seen heldout heldout2 heldout3; do
+  for ph in seen heldout heldout2 heldout3 heldout4; do
     out=$R/time/$run-$ph
     [ -f $out/episodes.jsonl ] || rag episodes --scenes $R/$run --time-indexed --out $out/episodes.jsonl --quiet \
       episodes.time_phrasing=$ph
