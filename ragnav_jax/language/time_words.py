@@ -26,7 +26,8 @@ ORDINALS: dict[str, tuple[str, int]] = {
     "penultimate": ("last", 2), "penultimately": ("last", 2), "second last": ("last", 2),
     "second most recent": ("last", 2), "second most recently": ("last", 2), "one before last": ("last", 2),
     "second from last": ("last", 2), "second from the end": ("last", 2),
-    "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3), "third from last": ("last", 3),
+    "third to last": ("last", 3), "last but two": ("last", 3), "third last": ("last", 3),
+    "third from last": ("last", 3),
     "fourth to last": ("last", 4), "fifth to last": ("last", 5),
     "third most recent": ("last", 3), "third most recently": ("last", 3), "antepenultimate": ("last", 3),
 }
@@ -45,12 +46,14 @@ _ORD_ADJ = _alt(k for k in ORDINALS if k not in _ADV_ONLY)
 _SUBJ = r"(?:i|you|we|u|the\s+robot|it)(?:'ve|'d|\s+have|\s+had)?"
 # perception verbs in the past (a present "you see first" is an order of work, not a memory)
 _VERB = ("saw|seen|spotted|spied|noticed|passed|came\\s+across|come\\s+across|found|encountered|observed|met|clocked|"
-         "glimpsed|sighted|caught\\s+sight\\s+of|ran\\s+into|laid\\s+eyes\\s+on|set\\s+eyes\\s+on|walked\\s+(?:past|by)|"
+         "glimpsed|sighted|caught\\s+sight\\s+of|ran\\s+into|laid\\s+eyes\\s+on|set\\s+eyes\\s+on|"
+         "walked\\s+(?:past|by)|"
          "went\\s+(?:past|by)|drove\\s+(?:past|by)|rolled\\s+(?:past|by)|recorded|logged|detected|mapped|viewed|"
          "looked\\s+at|discovered|registered|picked\\s+up|saw\\s+(?:it|one)|eyeballed|happened\\s+(?:up)?on|"
          "stumbled\\s+(?:up)?on|stumbled\\s+across|bumped\\s+into|came\\s+upon|clapped\\s+eyes\\s+on|"
          "laid\\s+eyes\\s+upon|set\\s+eyes\\s+upon|caught\\s+a\\s+glimpse\\s+of|got\\s+a\\s+look\\s+at|"
-         "checked\\s+(?:on|out)|looked\\s+in\\s+on|identified|(?:watched|saw)\\s+(?:you|it|the\\s+robot)\\s+(?:find|spot|pass)")
+         "checked\\s+(?:on|out)|looked\\s+in\\s+on|identified|"
+         "(?:watched|saw)\\s+(?:you|it|the\\s+robot)\\s+(?:find|spot|pass)")
 _PARTICIPLE = ("seen|spotted|noticed|observed|sighted|encountered|glimpsed|recorded|logged|detected|viewed|"
                "discovered|registered|found|passed|mapped")
 _TRAIL = (r"(?:\s+(?:it|one|them))?(?:\s+of\s+all)?"
@@ -99,7 +102,8 @@ _SEVERAL = re.compile(rf"(?P<all>[^.?!;:]*?\b(?:more\s+than\s+(?:one|1)|every|ea
                       r"(?=\s*(?:[.?!;:,]|-\s|$|\s+(?:earlier|before|right|didn't|did|today|during|on|yesterday|in\s+"
                       rf"(?:chronological\s+)?order)\b|\s+(?:that\s+|which\s+)?{_SUBJ}\s+(?:{_VERB})\b))"
                       r"[^.?!;:,]*?(?:[.?!;:,]+|\s-\s))")
-_ROOM_AFTER = re.compile(r"\b(?:in|within|inside)\s+the\s+(?P<rm>[a-z][a-z -]*?)(?=\s+(?:in\s+(?:chronological\s+)?order|on|"
+_ROOM_AFTER = re.compile(r"\b(?:in|within|inside)\s+the\s+(?P<rm>[a-z][a-z -]*?)"
+                         r"(?=\s+(?:in\s+(?:chronological\s+)?order|on|"
                          r"during|earlier|today|this|when|while)\b|\s*[,.;:!?]|\s*$)")
 _ONE = re.compile(rf"\bthe\s+(?:(?P<ord>{_alt(ORDINALS)})(?:[\s-]+(?:one|of\s+them))?|one|of\s+them)\b")
 # what makes the several a memory: someone saw them, or they were met on the exploration
@@ -137,12 +141,14 @@ _COUNTING = re.compile(r"\b(?:reckoning|counting|working|going|starting)\s+(?P<b
 
 
 # "the first radiator you clocked is the one i want": what follows the time phrase says only that it is the goal
-_THE_ONE_I_WANT = re.compile(r"(⟪[a-z]+⟫)\s*(?:(?:is|'s)\s+the\s+one\s+(?:(?:that|which)\s+)?(?:to\s+which\s+)?(?:i|we)\b[^.;:!?]*"
+_THE_ONE_I_WANT = re.compile(r"(⟪[a-z]+⟫)\s*(?:(?:is|'s)\s+the\s+one\s+(?:(?:that|which)\s+)?(?:to\s+which\s+)?"
+                             r"(?:i|we)\b[^.;:!?]*"
                              r"|(?:(?:that|which)\s+)?(?:i'm|i\s+am|we're|we\s+are)\s+after\b)")
 
 
 # "just before the last one", "straight after the first": one place further from the end counted from
-_RELATIVE = re.compile(rf"(?P<one>\bone\s+)?\b(?:just|right|straight|immediately)\s+(?P<rel>before|after)\s+the\s+(?P<ref>{_alt(ORDINALS)})"
+_RELATIVE = re.compile(rf"(?P<one>\bone\s+)?\b(?:just|right|straight|immediately)\s+(?P<rel>before|after)\s+the\s+"
+                       rf"(?P<ref>{_alt(ORDINALS)})"
                        r"(?:[\s-]+one)?\b")
 _WORDS = {("first", 1): "first", ("first", 2): "second", ("first", 3): "third", ("first", 4): "fourth",
           ("first", 5): "fifth", ("last", 1): "last", ("last", 2): "second to last", ("last", 3): "third to last",

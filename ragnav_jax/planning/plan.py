@@ -68,6 +68,7 @@ def plan_instruction(bank, scene, instruction: str, embedder, cfg) -> dict:
             "fingerprint_similarity": round(float(e["node_sem"][g, node]), 4),
             "instance_similarity": round(float(e["instance_sim"][g, node]), 4),
             "location_term": round(float(e["loc"][g, node]), 4), "sensor_term": round(float(e["sensor"][g, node]), 4),
+            "time_term": round(float(e["time"][g, node]), 4),
             "anchor_node": int(e["anchor"][g, node]), "neighbour_boost": round(float(e["boost"][g, node]), 4),
         })
     pos = np.asarray(mem.position)

@@ -126,7 +126,8 @@ def instance_scores(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams):
     near = jnp.minimum(prox / jnp.maximum(jnp.max(jnp.where(likely, prox, 0.0)), 1e-6), 1.0)
     near = jnp.where(jnp.any(likely), near, 1.0)[si]  # (N, M)
     base = (1.0 - p.w_slot) * node_sem[:, None] + p.w_slot * slot_sim
-    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None] * near * _pow(when[si], p.w_time) * fresh[si]
+    inst = base * _pow(loc, p.w_loc) * _pow(sens, p.w_sensor) * room[:, None] * near
+    inst = inst * _pow(when[si], p.w_time) * fresh[si]
     inst = jnp.where(idx.slot_mask & idx.node_mask[:, None], inst, K.NEG)
     return inst, dict(node_sem=node_sem, slot_sim=slot_sim, loc=loc, sensor=sens, anchor_sim=anchor_sim, room=room,
                       category=match[si], holds=holds, time=when[si])
@@ -195,7 +196,7 @@ def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, gate_
     straight-through gradients (kernels.gate); the scores are the same either way.
 
     Returns scores (N,) (K.NEG where masked or pruned) and an explanation dict of per-node arrays:
-    node_sem, instance (best instance index), instance_sim, loc, sensor, anchor (node index or -1),
+    node_sem, instance (best instance index), instance_sim, loc, sensor, time, anchor (node index or -1),
     boost (mean relevant-neighbour score), forest (kept by the beam), relaxed (the node's score with
     no anchor validation, boosting or forest lock, K.NEG where it has no observation), category (its best
     instance's head noun matches the target's: head similarity >= match_threshold). Evaluation orders
@@ -249,7 +250,8 @@ def score_subgoal(idx: RetrievalIndex, q: QueryArrays, p: RetrievalParams, gate_
 
     expl = dict(
         node_sem=t["node_sem"], room=t["room"], instance=best.astype(jnp.int32), instance_sim=take(t["slot_sim"]),
-        loc=take(t["loc"]), sensor=take(t["sensor"]), anchor=anchor.astype(jnp.int32), boost=boost_mean,
+        loc=take(t["loc"]), sensor=take(t["sensor"]), time=take(t["time"]), anchor=anchor.astype(jnp.int32),
+        boost=boost_mean,
         forest=jnp.where(p.use_forest > 0, allowed, True), relaxed=relaxed, category=take(t["category"]),
     )
     return s, expl

@@ -13,7 +13,8 @@ for run in seen-t unseen2-t unseen3; do
     out=$R/time/$run-$ph
     [ -f $out/episodes.jsonl ] || rag episodes --scenes $R/$run --time-indexed --out $out/episodes.jsonl --quiet \
       episodes.time_phrasing=$ph
-    rag retrieve --run $R/$run --episodes $out/episodes.jsonl --out $out/retrieve --force --quiet --allow-unparsed > /dev/null
+    rag retrieve --run $R/$run --episodes $out/episodes.jsonl --out $out/retrieve --force --quiet \
+      --allow-unparsed > /dev/null
     [ -n "${ONLY_RAGNAV:-}" ] && continue
     rag retrieve --run $R/$run --episodes $out/episodes.jsonl --out $out/retrieve-notime --force --quiet \
       --allow-unparsed retrieval.w_time=0 > /dev/null

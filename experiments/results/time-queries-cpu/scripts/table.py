@@ -13,7 +13,8 @@ from ragnav_jax.language.types import ParseError
 root = Path(sys.argv[1])
 fresh = Path(sys.argv[2]) if len(sys.argv) > 2 else None
 HOUSES = {"seen-t": "seen split", "unseen2-t": "fixed unseen", "unseen3": "fresh unseen"}
-PHRASINGS = [p for p in ("seen", "heldout", "heldout2", "heldout3", "heldout4") if (root / "time" / f"seen-t-{p}").exists()]
+PHRASINGS = [p for p in ("seen", "heldout", "heldout2", "heldout3", "heldout4")
+             if (root / "time" / f"seen-t-{p}").exists()]
 
 
 def acc(path: Path) -> str:
@@ -37,7 +38,8 @@ def agreement(d: Path) -> str:
     return f"{ok}/{n}"
 
 
-print("| houses | phrasing | RAGNav top-1 (instance) | fresh run | time term off | NaiveRAG-style | whole chain parsed |")
+print("| houses | phrasing | RAGNav top-1 (instance) | fresh run | time term off | NaiveRAG-style "
+      "| whole chain parsed |")
 print("|---|---|---|---|---|---|---|")
 for run, name in HOUSES.items():
     for ph in PHRASINGS:
