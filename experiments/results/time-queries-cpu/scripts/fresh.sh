@@ -9,7 +9,8 @@ for pair in "heldout:0e0bb4f" "heldout2:b92b4bd" "heldout3:b931297" "heldout4:bd
   ph=${pair%%:*}; c=${pair##*:}; wt=/tmp/fresh-$c
   if [ ! -d $wt ]; then
     git worktree add -q $wt $c && ln -s $PWD/.venv $wt/.venv
-    grep -q instance_accuracy $wt/ragnav_jax/retrieval/evaluate.py || git -C $wt apply "$(cd "$(dirname "$0")" && pwd)/eval_instance.patch"
+    patch="$(cd "$(dirname "$0")" && pwd)/eval_instance.patch"
+    grep -q instance_accuracy $wt/ragnav_jax/retrieval/evaluate.py || git -C $wt apply "$patch"
   fi
   for run in seen-t unseen2-t unseen3; do
     out=$R/fresh/$run-$ph
