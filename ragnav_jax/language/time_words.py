@@ -78,18 +78,19 @@ _ADV_AFTER = re.compile(rf"(?:\s*,)?\s+(?:(?:that|which)\s+)?{_SUBJ}\s+(?:{_VERB
 # "the mug seen first", "the lamp that was spotted most recently"
 _PART_AFTER = re.compile(rf"(?:\s*,)?\s+(?:(?:that|which)\s+(?:was|were)\s+)?(?:{_PARTICIPLE})\s+(?P<ord>{_ORD_ADV})\b"
                          rf"{_TRAIL}")
+_PLACE = r"(?:spot|place|position|location)"
+_WHERE = rf"\b(?:(?:the|to\s+the)\s+{_PLACE}\s+)?where\s+"  # "(the spot) where ..."
 # "where the chair was before it moved", "the place where the vase stood originally"
 _BEFORE_MOVE = re.compile(
-    rf"\b(?:(?:the|to\s+the)\s+(?:spot|place|position|location)\s+)?where\s+{_DET}\s+{_NP}\s+"
+    rf"{_WHERE}{_DET}\s+{_NP}\s+"
     r"(?:was|were|stood|sat|used\s+to\s+(?:be|stand|sit))\s+"
     r"(?:before\s+(?:it|they)\s+(?:was\s+|were\s+|got\s+)?moved|originally|at\s+(?:the\s+)?(?:start|beginning|outset)|"
     r"at\s+first|in\s+the\s+beginning)\b")
 # "the chair's old spot", "the vase's original position"
-_OLD_SPOT = re.compile(rf"\b{_DET}\s+{_NP}'s\s+(?:old|original|previous|former|first|earlier)\s+"
-                       r"(?:spot|place|position|location)\b")
+_OLD_SPOT = re.compile(rf"\b{_DET}\s+{_NP}'s\s+(?:old|original|previous|former|first|earlier)\s+{_PLACE}\b")
 # "where you last saw the chair", "the spot where we first spotted the mug"
 _WHERE_SEEN = re.compile(
-    rf"\b(?:(?:the|to\s+the)\s+(?:spot|place|position|location)\s+)?where\s+{_SUBJ}\s+(?P<ord>{_ORD_ADV})\s+"
+    rf"{_WHERE}{_SUBJ}\s+(?P<ord>{_ORD_ADV})\s+"
     rf"(?:{_VERB})\s+(?P<det>the|a|an|your|that|my|our)\s+{_NP}(?=\s*(?:[,.;:!?]|$|\s+(?:then|and|in|on|near|by|"
     r"next|beside|before|after|please)\b))")
 
